@@ -1,0 +1,92 @@
+# Makefile - build, test, install and demo the rough-contact toolkit.
+#   make                 library and tools into bin/
+#   make check           all tests; ends with "N passed, N failed"
+#   make check SANITIZE=1  the same under AddressSanitizer + UBSan
+#   make demo            the built-in default example
+#   make bench           benchmarks (print figures, never fail on time)
+#   make install PREFIX=/usr/local
+
+PREFIX  ?= /usr/local
+CC      ?= cc
+PKGS     = fftw3 gsl libpng
+OPTFLAGS ?= -O2 -g
+CFLAGS  ?= $(OPTFLAGS)
+WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
+STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L
+PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) -Ilib -Itools $(PKG_CFLAGS)
+LDLIBS   = -lfftw3_omp $(PKG_LIBS) -lm
+ALL_LDFLAGS = -fopenmp $(SAN_FLAGS) $(LDFLAGS)
+
+ifeq ($(SANITIZE),1)
+SAN_FLAGS = -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+O   = build/san
+BIN = build/san/bin
+else
+O   = build
+BIN = bin
+endif
+
+LIB_SRC  = $(wildcard lib/*.c)
+LIB_OBJ  = $(LIB_SRC:%.c=$(O)/%.o)
+LIB      = $(O)/librc.a
+TOOL_SRC = $(filter-out tools/common.c,$(wildcard tools/*.c))
+TOOLS    = $(TOOL_SRC:tools/%.c=$(BIN)/%)
+COMMON_OBJ = $(O)/tools/common.o
+TEST_SRC = $(wildcard tests/test_*.c)
+TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
+TESTLIB_OBJ = $(O)/tests/testlib.o
+BENCH_SRC = $(wildcard bench/bench_*.c)
+BENCHES  = $(BENCH_SRC:bench/%.c=$(O)/bench/%)
+
+.PHONY: all check demo bench install uninstall clean deps
+all: $(TOOLS)
+
+$(O)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
+
+$(LIB): $(LIB_OBJ)
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+$(BIN)/%: $(O)/tools/%.o $(COMMON_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(O)/tests/test_%: $(O)/tests/test_%.o $(TESTLIB_OBJ) $(LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+
+$(O)/bench/bench_%: $(O)/bench/bench_%.o $(LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+
+check: $(TOOLS) $(TESTS)
+	@sh tests/run.sh $(BIN) $(O)/tests
+
+bench: $(TOOLS) $(BENCHES)
+	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
+	@for s in bench/*.sh; do [ -f "$$s" ] || continue; echo "== $$s"; RC_BIN=$(BIN) sh $$s || exit 1; done
+
+demo: $(TOOLS)
+	@RC_BIN=$(BIN) sh data/demo.sh
+
+install: $(TOOLS)
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
+	    $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
+	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin
+	for s in 1 5 7; do for m in man/man$$s/*.$$s; do [ -f "$$m" ] && \
+	    install -m 644 $$m $(DESTDIR)$(PREFIX)/share/man/man$$s; done; done; true
+
+uninstall:
+	for t in $(TOOLS:$(BIN)/%=%); do rm -f $(DESTDIR)$(PREFIX)/bin/$$t; done
+
+# Debian packages needed to build and test (what .ci/run installs).
+deps:
+	apt-get update && apt-get install -y build-essential pkg-config \
+	    libfftw3-dev libgsl-dev libpng-dev mandoc gnuplot-nox
+
+clean:
+	rm -rf build bin
+
+-include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d)

@@ -1,0 +1,250 @@
+/* grid.c - the grid type, its metadata and history. */
+#include "grid.h"
+
+#include <fftw3.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *kind_names[RC_KIND_COUNT] = {
+	"height", "gap", "pressure", "displacement", "mask", "spectrum"
+};
+
+const char *
+rc_kind_name(enum rc_kind k)
+{
+	return (unsigned)k < RC_KIND_COUNT ? kind_names[k] : "unknown";
+}
+
+int
+rc_kind_parse(const char *name)
+{
+	for (int k = 0; k < RC_KIND_COUNT; k++)
+		if (strcmp(name, kind_names[k]) == 0)
+			return k;
+	return -1;
+}
+
+void
+rc_format_double(char *buf, size_t len, double v)
+{
+	for (int prec = 6; prec <= 17; prec++) {
+		snprintf(buf, len, "%.*g", prec, v);
+		if (strtod(buf, NULL) == v || !isfinite(v))
+			return;
+	}
+}
+
+int
+rc_grid_check_shape(size_t nx, size_t ny, double lx, double ly, rc_err *err)
+{
+	if (nx == 0 || ny == 0)
+		return rc_seterr(err, "grid size %zux%zu: both sizes must be at least 1", nx, ny);
+	if (nx > RC_GRID_MAX_DIM || ny > RC_GRID_MAX_DIM)
+		return rc_seterr(err, "grid size %zux%zu: a size exceeds %u", nx, ny,
+		    RC_GRID_MAX_DIM);
+	if (rc_mul_size(nx, ny) == 0 || nx * ny > RC_GRID_MAX_POINTS)
+		return rc_seterr(err, "grid size %zux%zu: too many points", nx, ny);
+	if (!(lx > 0) || !(ly > 0) || !isfinite(lx) || !isfinite(ly))
+		return rc_seterr(err, "cell size %gx%g: lengths must be positive and finite",
+		    lx, ly);
+	return 0;
+}
+
+rc_grid *
+rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
+{
+	rc_grid *g;
+	size_t n;
+
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		return NULL;
+	n = nx * ny;
+	if ((g = rc_calloc(1, sizeof(*g), err)) == NULL)
+		return NULL;
+	g->nx = nx;
+	g->ny = ny;
+	g->lx = lx;
+	g->ly = ly;
+	g->kind = RC_KIND_HEIGHT;
+	g->z = fftw_alloc_real(n);
+	if (g->z == NULL) {
+		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
+		    n * sizeof(double), nx, ny);
+		free(g);
+		return NULL;
+	}
+	memset(g->z, 0, n * sizeof(double));
+	return g;
+}
+
+void
+rc_grid_free(rc_grid *g)
+{
+	if (g == NULL)
+		return;
+	for (size_t i = 0; i < g->nmeta; i++) {
+		free(g->meta[i].key);
+		free(g->meta[i].val);
+	}
+	free(g->meta);
+	for (size_t i = 0; i < g->nhistory; i++)
+		free(g->history[i]);
+	free(g->history);
+	fftw_free(g->z);
+	free(g);
+}
+
+rc_grid *
+rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
+{
+	rc_grid *c = rc_grid_new(g->nx, g->ny, g->lx, g->ly, err);
+
+	if (c == NULL)
+		return NULL;
+	c->kind = g->kind;
+	memcpy(c->unit, g->unit, sizeof(c->unit));
+	if (rc_grid_meta_copy(c, g, err) != 0)
+		goto fail;
+	for (size_t i = 0; i < g->nhistory; i++)
+		if (rc_grid_history_add(c, g->history[i], err) != 0)
+			goto fail;
+	if (copy_values)
+		memcpy(c->z, g->z, rc_grid_size(g) * sizeof(double));
+	return c;
+fail:
+	rc_grid_free(c);
+	return NULL;
+}
+
+static int
+valid_key(const char *key)
+{
+	if (*key == '\0')
+		return 0;
+	for (const char *p = key; *p; p++)
+		if (!(*p == '_' || *p == '-' || *p == '.' ||
+		    (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
+		    (*p >= '0' && *p <= '9')))
+			return 0;
+	return 1;
+}
+
+int
+rc_grid_meta_set(rc_grid *g, const char *key, const char *val, rc_err *err)
+{
+	char *v;
+
+	if (!valid_key(key))
+		return rc_seterr(err, "metadata key '%s': only letters, digits, '_', '-', '.'", key);
+	if (strchr(val, '\n') != NULL)
+		return rc_seterr(err, "metadata value for '%s' contains a newline", key);
+	if ((v = strdup(val)) == NULL)
+		return rc_seterr(err, "out of memory");
+	for (size_t i = 0; i < g->nmeta; i++)
+		if (strcmp(g->meta[i].key, key) == 0) {
+			free(g->meta[i].val);
+			g->meta[i].val = v;
+			return 0;
+		}
+	rc_kv *m = realloc(g->meta, (g->nmeta + 1) * sizeof(*m));
+	if (m == NULL || (m[g->nmeta].key = strdup(key)) == NULL) {
+		if (m != NULL)
+			g->meta = m;
+		free(v);
+		return rc_seterr(err, "out of memory");
+	}
+	g->meta = m;
+	m[g->nmeta++].val = v;
+	return 0;
+}
+
+int
+rc_grid_meta_setf(rc_grid *g, const char *key, rc_err *err, const char *fmt, ...)
+{
+	char buf[1024];
+	va_list ap;
+
+	va_start(ap, fmt);
+	vsnprintf(buf, sizeof(buf), fmt, ap);
+	va_end(ap);
+	return rc_grid_meta_set(g, key, buf, err);
+}
+
+int
+rc_grid_meta_setd(rc_grid *g, const char *key, double v, rc_err *err)
+{
+	char buf[64];
+
+	rc_format_double(buf, sizeof(buf), v);
+	return rc_grid_meta_set(g, key, buf, err);
+}
+
+const char *
+rc_grid_meta_get(const rc_grid *g, const char *key)
+{
+	for (size_t i = 0; i < g->nmeta; i++)
+		if (strcmp(g->meta[i].key, key) == 0)
+			return g->meta[i].val;
+	return NULL;
+}
+
+int
+rc_grid_meta_getd(const rc_grid *g, const char *key, double *v)
+{
+	const char *s = rc_grid_meta_get(g, key);
+	char *end;
+	double d;
+
+	if (s == NULL)
+		return 0;
+	d = strtod(s, &end);
+	if (end == s || *end != '\0')
+		return 0;
+	*v = d;
+	return 1;
+}
+
+int
+rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err)
+{
+	for (size_t i = 0; i < src->nmeta; i++)
+		if (rc_grid_meta_set(dst, src->meta[i].key, src->meta[i].val, err) != 0)
+			return -1;
+	return 0;
+}
+
+int
+rc_grid_history_add(rc_grid *g, const char *line, rc_err *err)
+{
+	char **h = realloc(g->history, (g->nhistory + 1) * sizeof(*h));
+	char *s;
+
+	if (h == NULL)
+		return rc_seterr(err, "out of memory");
+	g->history = h;
+	if ((s = strdup(line)) == NULL)
+		return rc_seterr(err, "out of memory");
+	/* A history line is one header line: fold newlines. */
+	for (char *p = s; *p; p++)
+		if (*p == '\n' || *p == '\r')
+			*p = ' ';
+	h[g->nhistory++] = s;
+	return 0;
+}
+
+int
+rc_grid_all_finite(const rc_grid *g, size_t *bad)
+{
+	size_t n = rc_grid_size(g);
+
+	for (size_t i = 0; i < n; i++)
+		if (!isfinite(g->z[i])) {
+			if (bad)
+				*bad = i;
+			return 0;
+		}
+	return 1;
+}

@@ -1,0 +1,80 @@
+/* grid.h - the periodic grid every tool reads and writes.
+ *
+ * nx by ny points, periodic, pixel registered, spacing lx/nx by ly/ny,
+ * row-major with x fastest: value (i, j) is z[j * nx + i].  Heights are in
+ * the same length unit as lx and ly.  Besides the values a grid carries
+ * what they are (kind), key/value metadata (the generation parameters,
+ * which every tool passes on) and the history of command lines that made it.
+ */
+#ifndef RC_GRID_H
+#define RC_GRID_H
+
+#include <stddef.h>
+#include "rc_err.h"
+
+/* Largest accepted dimension and point count: sane for a 64-bit machine,
+ * and small enough that nx*ny*8 never overflows. */
+#define RC_GRID_MAX_DIM    (1u << 24)
+#define RC_GRID_MAX_POINTS ((size_t)1 << 36)
+
+enum rc_kind {
+	RC_KIND_HEIGHT = 0,
+	RC_KIND_GAP,
+	RC_KIND_PRESSURE,
+	RC_KIND_DISPLACEMENT,
+	RC_KIND_MASK,
+	RC_KIND_SPECTRUM,
+	RC_KIND_COUNT
+};
+
+typedef struct rc_kv {
+	char *key;
+	char *val;
+} rc_kv;
+
+typedef struct rc_grid {
+	size_t nx, ny;
+	double lx, ly;
+	enum rc_kind kind;
+	char unit[32];		/* length unit, "" if unknown */
+	rc_kv *meta;		/* generation parameters, in insertion order */
+	size_t nmeta;
+	char **history;		/* one command line per entry, oldest first */
+	size_t nhistory;
+	double *z;		/* nx*ny values, FFTW-aligned */
+} rc_grid;
+
+/* Allocate a zeroed grid; checks dimensions and overflow. */
+rc_grid *rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err);
+void rc_grid_free(rc_grid *g);
+/* Same shape, metadata and history; values copied if copy_values. */
+rc_grid *rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err);
+/* Check nx, ny, nx*ny, lx, ly before allocating; message names the problem. */
+int rc_grid_check_shape(size_t nx, size_t ny, double lx, double ly, rc_err *err);
+
+static inline size_t rc_grid_size(const rc_grid *g) { return g->nx * g->ny; }
+
+/* Metadata: set replaces an existing key.  Keys are [A-Za-z0-9_.-]+. */
+int rc_grid_meta_set(rc_grid *g, const char *key, const char *val, rc_err *err);
+int rc_grid_meta_setf(rc_grid *g, const char *key, rc_err *err,
+    const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+/* Shortest text that reads back as exactly v. */
+int rc_grid_meta_setd(rc_grid *g, const char *key, double v, rc_err *err);
+const char *rc_grid_meta_get(const rc_grid *g, const char *key);
+/* 1 and *v set if the key exists and parses as a number, else 0. */
+int rc_grid_meta_getd(const rc_grid *g, const char *key, double *v);
+int rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err);
+
+int rc_grid_history_add(rc_grid *g, const char *line, rc_err *err);
+
+const char *rc_kind_name(enum rc_kind k);
+/* Returns -1 for an unknown name. */
+int rc_kind_parse(const char *name);
+
+/* Formats v with the fewest digits (up to 17) that read back exactly. */
+void rc_format_double(char *buf, size_t len, double v);
+
+/* 1 if all values are finite, else 0 and *bad the first bad index. */
+int rc_grid_all_finite(const rc_grid *g, size_t *bad);
+
+#endif

@@ -1,0 +1,52 @@
+#!/bin/sh
+# run.sh - run every C test binary and every end-to-end script, add up
+# their "N passed, N failed" lines and end with the total.
+#   tests/run.sh BINDIR TESTBINDIR
+RC_BIN=$(cd "$1" && pwd); export RC_BIN
+tbin=$2
+top=$(cd "$(dirname "$0")/.." && pwd); export RC_TOP="$top"
+passed=0 failed=0 broken=""
+log=$(mktemp)
+
+run_one() {
+	name=$1; shift
+	"$@" >"$log" 2>&1
+	status=$?
+	line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+	if [ -z "$line" ]; then
+		broken="$broken $name"
+		failed=$((failed + 1))
+		echo "BROKEN: $name (exit $status, no summary line)"; tail -n 5 "$log"
+		return
+	fi
+	p=${line%% passed*}; f=${line#*, }; f=${f%% failed*}
+	if [ "$f" -ne 0 ] || [ "$status" -ne 0 ]; then
+		grep -E '^(FAIL|BROKEN)' "$log"
+		[ "$f" -eq 0 ] && f=1
+	fi
+	passed=$((passed + p)); failed=$((failed + f))
+	printf '%-28s %s\n' "$name" "$line"
+}
+
+for t in "$tbin"/test_*; do
+	[ -x "$t" ] || continue
+	run_one "$(basename "$t")" "$t"
+done
+for s in "$top"/tests/e2e/*.sh; do
+	case $s in */lib.sh) continue ;; esac
+	run_one "$(basename "$s")" sh "$s"
+done
+# Man pages lint clean, when mandoc is here.
+if command -v mandoc >/dev/null 2>&1; then
+	for m in "$top"/man/man*/*.[1-9]; do
+		[ -f "$m" ] || continue
+		if out=$(mandoc -Tlint -Wwarning "$m" 2>&1) && [ -z "$out" ]; then
+			passed=$((passed + 1))
+		else
+			failed=$((failed + 1)); echo "FAIL: mandoc -Tlint $(basename "$m"): $out"
+		fi
+	done
+fi
+rm -f "$log"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,293 @@
+/* common.c - shared tool plumbing (see common.h). */
+#include "common.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "fft.h"
+
+void
+tool_init(struct tool *t, const char *name, int argc, char **argv)
+{
+	size_t len = 1;
+
+	memset(t, 0, sizeof(*t));
+	t->name = name;
+	t->lx = t->ly = 1.0;
+	for (int i = 0; i < argc; i++)
+		len += strlen(argv[i]) + 3;
+	if ((t->cmdline = malloc(len)) == NULL)
+		tool_fail(t, "out of memory");
+	t->cmdline[0] = '\0';
+	for (int i = 0; i < argc; i++) {
+		const char *a = i == 0 ? name : argv[i];
+		int quote = strpbrk(a, " \t'\"") != NULL;
+		if (i)
+			strcat(t->cmdline, " ");
+		if (quote)
+			strcat(t->cmdline, "'");
+		strcat(t->cmdline, a);
+		if (quote)
+			strcat(t->cmdline, "'");
+	}
+}
+
+static void
+vmsg(const struct tool *t, const char *fmt, va_list ap)
+{
+	fprintf(stderr, "%s: ", t->name);
+	vfprintf(stderr, fmt, ap);
+	fputc('\n', stderr);
+}
+
+void
+tool_warn(const struct tool *t, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	vmsg(t, fmt, ap);
+	va_end(ap);
+}
+
+void
+tool_fail(const struct tool *t, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	vmsg(t, fmt, ap);
+	va_end(ap);
+	exit(1);
+}
+
+void
+tool_bad(struct tool *t, const char *fmt, ...)
+{
+	va_list ap;
+
+	va_start(ap, fmt);
+	vmsg(t, fmt, ap);
+	va_end(ap);
+	t->nbad++;
+}
+
+void
+tool_usage_check(const struct tool *t)
+{
+	if (t->nbad == 0)
+		return;
+	fprintf(stderr, "%s: %d usage problem%s; see '%s --help'\n", t->name,
+	    t->nbad, t->nbad == 1 ? "" : "s", t->name);
+	exit(2);
+}
+
+int
+tool_common_option(struct tool *t, int opt, const char *arg)
+{
+	long n;
+
+	switch (opt) {
+	case 'o':
+		t->out = arg;
+		return 1;
+	case 'q':
+		t->quiet = 1;
+		return 1;
+	case 'j':
+		if (tool_long(t, "-j", arg, &n) == 0) {
+			if (n < 1 || n > 4096)
+				tool_bad(t, "-j %s: threads must be 1 to 4096", arg);
+			else
+				t->threads = (int)n;
+		}
+		return 1;
+	case 'L':
+		if (tool_length_pair(t, "-L", arg, &t->lx, &t->ly) == 0)
+			t->have_l = 1;
+		return 1;
+	case OPT_JSON:
+		t->json = 1;
+		return 1;
+	case OPT_PNG:
+		t->png = arg;
+		return 1;
+	case OPT_VERSION:
+		printf("%s %s\n", t->name, RC_VERSION);
+		exit(tool_exit(t, 0));
+	}
+	return 0;
+}
+
+int
+tool_double(struct tool *t, const char *opt, const char *arg, double *v)
+{
+	char *end;
+	double d;
+
+	errno = 0;
+	d = strtod(arg, &end);
+	if (end == arg || *end != '\0' || !isfinite(d) || errno == ERANGE) {
+		tool_bad(t, "%s %s: not a finite number", opt, arg);
+		return -1;
+	}
+	*v = d;
+	return 0;
+}
+
+int
+tool_long(struct tool *t, const char *opt, const char *arg, long *v)
+{
+	char *end;
+	long n;
+
+	errno = 0;
+	n = strtol(arg, &end, 10);
+	if (end == arg || *end != '\0' || errno == ERANGE) {
+		tool_bad(t, "%s %s: not an integer", opt, arg);
+		return -1;
+	}
+	*v = n;
+	return 0;
+}
+
+int
+tool_size_pair(struct tool *t, const char *opt, const char *arg, size_t *nx,
+    size_t *ny)
+{
+	char *end, *end2;
+	long a, b;
+
+	errno = 0;
+	a = strtol(arg, &end, 10);
+	b = a;
+	if (end != arg && *end == 'x') {
+		b = strtol(end + 1, &end2, 10);
+		if (end2 == end + 1)
+			b = 0;
+		end = end2;
+	}
+	if (end == arg || *end != '\0' || errno == ERANGE || a < 1 || b < 1 ||
+	    a > (long)RC_GRID_MAX_DIM || b > (long)RC_GRID_MAX_DIM) {
+		tool_bad(t, "%s %s: want NX or NXxNY, positive integers up to %u",
+		    opt, arg, RC_GRID_MAX_DIM);
+		return -1;
+	}
+	*nx = (size_t)a;
+	*ny = (size_t)b;
+	return 0;
+}
+
+int
+tool_length_pair(struct tool *t, const char *opt, const char *arg, double *lx,
+    double *ly)
+{
+	char *end, *end2;
+	double a, b;
+
+	a = strtod(arg, &end);
+	b = a;
+	if (end != arg && *end == 'x') {
+		b = strtod(end + 1, &end2);
+		if (end2 == end + 1)
+			b = -1;
+		end = end2;
+	}
+	if (end == arg || *end != '\0' || !(a > 0) || !(b > 0) ||
+	    !isfinite(a) || !isfinite(b)) {
+		tool_bad(t, "%s %s: want L or LXxLY, positive finite lengths", opt, arg);
+		return -1;
+	}
+	*lx = a;
+	*ly = b;
+	return 0;
+}
+
+int
+tool_double_list(struct tool *t, const char *opt, const char *arg, double **v,
+    size_t *n)
+{
+	size_t cap = 1;
+	const char *p;
+	char *end;
+
+	for (p = arg; *p; p++)
+		cap += *p == ',';
+	if ((*v = malloc(cap * sizeof(**v))) == NULL)
+		tool_fail(t, "out of memory");
+	*n = 0;
+	p = arg;
+	for (;;) {
+		double d = strtod(p, &end);
+		if (end == p || (*end != ',' && *end != '\0') || !isfinite(d)) {
+			tool_bad(t, "%s %s: want a comma-separated list of finite numbers",
+			    opt, arg);
+			free(*v);
+			*v = NULL;
+			*n = 0;
+			return -1;
+		}
+		(*v)[(*n)++] = d;
+		if (*end == '\0')
+			return 0;
+		p = end + 1;
+	}
+}
+
+rc_grid *
+tool_read_grid(const struct tool *t, const char *path)
+{
+	rc_read_opts o = { t->lx, t->ly, t->have_l, 0 };
+	rc_err err;
+	rc_grid *g;
+
+	if (rc_is_stdio(path) && isatty(STDIN_FILENO))
+		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
+	g = rc_grid_read(path, &o, &err);
+	if (g == NULL)
+		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		    err.msg);
+	return g;
+}
+
+void
+tool_check_grid_path(struct tool *t, const char *opt, const char *path)
+{
+	if (path != NULL && rc_format_from_name(path) < 0)
+		tool_bad(t, "%s %s: unknown extension; use .surf, .npy, .gsf or .txt",
+		    opt, path);
+}
+
+void
+tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
+{
+	rc_err err;
+	int fmt = rc_format_from_name(path);
+
+	if (fmt < 0)
+		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf or .txt", path);
+	if (rc_is_stdio(path) && fmt != RC_FMT_TXT && isatty(STDOUT_FILENO))
+		tool_fail(t, "standard output is a terminal; refusing to write binary "
+		    "data there (use -o FILE or a pipe)");
+	if (rc_grid_history_add(g, t->cmdline, &err) != 0 ||
+	    rc_grid_write(g, path, (enum rc_format)fmt, &err) != 0)
+		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard output" : path,
+		    err.msg);
+	/* The history line belongs to this output only. */
+	free(g->history[--g->nhistory]);
+}
+
+int
+tool_exit(const struct tool *t, int status)
+{
+	if (fflush(stdout) != 0 || ferror(stdout)) {
+		fprintf(stderr, "%s: standard output: %s\n", t->name, strerror(errno));
+		status = status ? status : 1;
+	}
+	free(t->cmdline);
+	return status;
+}
