@@ -1,0 +1,78 @@
+/* solver.h - frictionless, non-adhesive contact of a linearly elastic
+ * periodic half space (above) on a rigid indenter of heights h (below).
+ *
+ * The elastic surface height u(r) obeys u >= h; gap g = u - h; the contact
+ * pressure sigma(r) >= 0 acts only where g = 0, and its mean equals the
+ * applied pressure.  Each Fourier mode of u has stiffness q E* / 2 per unit
+ * area (Wang & Mueser 2020, section 2; DESIGN.md).  Two independent
+ * methods share this interface: FIRE-GFMD (Zhou, Moseler & Mueser 2019)
+ * and Polonsky & Keer's constrained conjugate gradient (1999).
+ *
+ * A solver keeps its plans, buffers and current solution, so solving a
+ * list of pressures in order warm-starts each from the previous one.
+ */
+#ifndef RC_SOLVER_H
+#define RC_SOLVER_H
+
+#include "grid.h"
+
+enum rc_method {
+	RC_METHOD_FIRE = 0,
+	RC_METHOD_CG
+};
+
+typedef struct rc_solver_opts {
+	enum rc_method method;
+	double modulus;		/* contact modulus E* (default 1) */
+	double tol;		/* scale-free convergence tolerance (see the .c) */
+	long max_iter;		/* per solve */
+	int measure;		/* plan FFTs with FFTW_MEASURE */
+	/* Called every few iterations if not NULL (progress on a terminal). */
+	void (*progress)(void *ctx, long iter, double residual, double contact_fraction);
+	void *progress_ctx;
+	/* Polled every iteration if not NULL; non-zero stops the solve early
+	 * (SIGINT handling); the solve then returns 1 (not converged). */
+	volatile int *stop;
+} rc_solver_opts;
+
+typedef struct rc_solve_result {
+	long iterations;
+	double residual;	/* the convergence measure reached */
+	double seconds;		/* wall time of this solve */
+	int converged;
+} rc_solve_result;
+
+typedef struct rc_solver rc_solver;
+
+void rc_solver_defaults(rc_solver_opts *o);
+const char *rc_method_name(enum rc_method m);
+int rc_method_parse(const char *name);		/* -1 if unknown */
+
+/* The indenter is copied; it may be freed afterwards. */
+rc_solver *rc_solver_new(const rc_grid *indenter, const rc_solver_opts *o,
+    rc_err *err);
+void rc_solver_free(rc_solver *s);
+
+/* Warm start from an elastic surface height field u (nx*ny values). */
+int rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err);
+
+/* Solve at mean (absolute) pressure p > 0.  Returns 0 if converged, 1 if
+ * it stopped at max_iter or on *stop (the state is still the best reached
+ * and the accessors below are valid), -1 on an error. */
+int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
+    rc_err *err);
+
+/* The current solution, valid until the next solve or free. */
+const double *rc_solver_displacement(const rc_solver *s);	/* u(r) */
+const double *rc_solver_pressure(const rc_solver *s);		/* sigma(r) >= 0 */
+/* The contact set: 1 where the point is in contact, as decided by the
+ * method (documented in gfmd-solve(1)); both methods agree at convergence. */
+const unsigned char *rc_solver_contact(const rc_solver *s);
+/* Elastic energy per unit area, (1/2) sum_q (q E*/2) |u_q|^2 / N^2. */
+double rc_solver_elastic_energy(const rc_solver *s);
+/* Mean gap <u - h>. */
+double rc_solver_mean_gap(const rc_solver *s);
+/* Bytes the solver holds (for the memory report). */
+size_t rc_solver_bytes(const rc_solver *s);
+
+#endif
