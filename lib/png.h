@@ -1,4 +1,4 @@
-/* png.h - 8-bit PNG previews of grids.
+/* png.h - 8-bit PNG previews of grids (o may be NULL: defaults).
  *
  * Heights with a perceptually uniform colormap (computed, viridis-like),
  * masks in two colours, pressures optionally on a log scale; an optional
@@ -25,6 +25,11 @@ typedef struct rc_png_opts {
 } rc_png_opts;
 
 void rc_png_defaults(rc_png_opts *o);
+/* The image size rc_png_write uses: square pixels of min(dx, dy), longest
+ * side at most max_size (0 = 1024); a line (nx x 1 or 1 x ny) becomes a
+ * strip at least 16 pixels thick.  Colours: see colormap.h. */
+void rc_png_size(size_t nx, size_t ny, double lx, double ly, size_t max_size,
+    size_t *width, size_t *height);
 int rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
     rc_err *err);
 

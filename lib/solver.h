@@ -68,7 +68,7 @@ const double *rc_solver_pressure(const rc_solver *s);		/* sigma(r) >= 0 */
 /* The contact set: 1 where the point is in contact, as decided by the
  * method (documented in gfmd-solve(1)); both methods agree at convergence. */
 const unsigned char *rc_solver_contact(const rc_solver *s);
-/* Elastic energy per unit area, (1/2) sum_q (q E*/2) |u_q|^2 / N^2. */
+/* Elastic energy per unit area, (1/2) sum_q (q E* / 2) |u_q|^2 / N^2. */
 double rc_solver_elastic_energy(const rc_solver *s);
 /* Mean gap <u - h>. */
 double rc_solver_mean_gap(const rc_solver *s);

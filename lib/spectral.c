@@ -69,6 +69,36 @@ rc_spectral_derivs(const rc_grid *g, rc_fft *fft, double *hx, double *hy,
 }
 
 int
+rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
+    rc_err *err)
+{
+	rc_fft *f;
+	double n = (double)rc_grid_size(g);
+
+	if (fft == NULL)
+		return rc_seterr(err, "internal: rc_spectral_deriv needs a plan");
+	if (transform(g, fft, NULL, &f, err) != 0)
+		return -1;
+	for (size_t j = 0; j < g->ny; j++) {
+		double qy = rc_wavenumber(j, g->ny, g->ly);
+		double dqy = rc_deriv_wavenumber(j, g->ny, g->ly);
+		for (size_t i = 0; i < f->nxc; i++) {
+			double qx = rc_wavenumber(i, g->nx, g->lx);
+			double complex factor;
+			if (which == RC_DERIV_X)
+				factor = I * rc_deriv_wavenumber(i, g->nx, g->lx);
+			else if (which == RC_DERIV_Y)
+				factor = I * dqy;
+			else
+				factor = -(qx * qx + qy * qy);
+			f->spec[j * f->nxc + i] *= factor / n;
+		}
+	}
+	rc_fft_backward(f);
+	return 0;
+}
+
+int
 rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err)
 {
 	rc_fft own, *f;

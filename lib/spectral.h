@@ -20,6 +20,17 @@
 int rc_spectral_derivs(const rc_grid *g, rc_fft *fft, double *hx, double *hy,
     double *lap, rc_err *err);
 
+/* One derivative field at a time, left normalised in fft->real (which the
+ * next use of the plan overwrites), using no memory beyond the plan's two
+ * buffers: for callers that reduce each field before making the next. */
+enum rc_deriv {
+	RC_DERIV_X = 0,		/* dh/dx */
+	RC_DERIV_Y,		/* dh/dy */
+	RC_DERIV_LAPLACIAN	/* d2h/dx2 + d2h/dy2 */
+};
+int rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
+    rc_err *err);
+
 /* rms gradient over the whole grid, from the spectrum (no gradient field). */
 int rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err);
 

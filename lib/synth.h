@@ -27,23 +27,39 @@ typedef struct rc_synth_params {
 	double lx, ly;
 	/* self-affine */
 	double hurst;		/* H in (0, 1) */
-	double lambda_r;	/* roll-off wavelength (default lx) */
-	double lambda_s;	/* short-wavelength cutoff (default 2 lx/nx) */
+	double lambda_r;	/* roll-off wavelength (0: max(lx, ly)) */
+	double lambda_s;	/* short-wavelength cutoff (0: the least
+				 * legal, two grid spacings in the Peklenik
+				 * metric: max(2 dx/g, 2 dy g)) */
 	int rolloff;		/* f_roll: C flat below q_r instead of zero */
 	double peklenik;	/* gamma_P, 1 = isotropic */
 	uint64_t seed;
 	int gaussian_amplitudes;	/* Rayleigh moduli instead of sqrt(C) */
-	/* normalisation: exactly one of these is > 0 (rms_gradient default 1);
-	 * applies to selfaffine; for the others only if set explicitly */
+	/* normalisation: at most one of these is > 0.  selfaffine with both
+	 * 0 (the default) is normalised to rms_gradient 1; the other types
+	 * are scaled only if one is set explicitly (> 0). */
 	double rms_gradient;
 	double rms_height;
 	/* harmonic */
 	double exponent;	/* n */
 	double radius;		/* R */
 	/* sine, eggbox */
-	double wavelength;
+	double wavelength;	/* 0: lx; must divide lx (and ly for eggbox) */
 	double amplitude;
 } rc_synth_params;
+
+/*
+ * Self-affine modes: h(r) = sum_k a_k exp(i q_k . r) over the grid's wave
+ * vectors q_k = 2 pi (kx/lx, ky/ly).  |a_k| is proportional to
+ * sqrt(C(q_P)) with q_P = sqrt(g^2 qx^2 + qy^2/g^2), g the Peklenik
+ * parameter (Eq. 3 without its 1/sqrt(g^4 + g^-4), so that g = 1 is
+ * exactly isotropic).  A mode is kept iff q_r <= q_P < q_s (with a
+ * relative tolerance of 1e-9 on both edges); with rolloff also every
+ * 0 < q_P < q_r, at C(q_r).  The mean (k = 0) and the Nyquist row/column
+ * are zero.  Phases (and Rayleigh moduli) come from a hash of (seed, kx,
+ * ky) of the canonical half plane (kx > 0, or kx = 0 and ky > 0).
+ */
+
 
 void rc_synth_defaults(rc_synth_params *p);
 /* Check every parameter; message names the first bad one. */
@@ -51,6 +67,13 @@ int rc_synth_check(const rc_synth_params *p, rc_err *err);
 /* Make the surface; generation parameters go into the metadata
  * (type, H, lambda_r, lambda_s, rolloff, peklenik, seed, ...). */
 rc_grid *rc_synth(const rc_synth_params *p, rc_err *err);
+
+/* The defaults resolved: lambda_r, lambda_s, wavelength actually used. */
+double rc_synth_lambda_r(const rc_synth_params *p);
+double rc_synth_lambda_s(const rc_synth_params *p);
+double rc_synth_wavelength(const rc_synth_params *p);
+/* The hash that seeds mode (kx, ky)'s random stream (exposed for tests). */
+uint64_t rc_synth_mode_key(uint64_t seed, long kx, long ky);
 
 const char *rc_surface_type_name(enum rc_surface_type t);
 int rc_surface_type_parse(const char *name);	/* -1 if unknown */

@@ -1,0 +1,87 @@
+/* contact.h - analysis of a contact field: contact fraction, contact
+ * line, patches, and the indenter's gradients averaged over the contact.
+ *
+ * Input: the indenter heights h (a periodic grid) and a contact mask of
+ * nx*ny bytes, 1 where the point is in contact.  Everything is O(N) and
+ * only what the flags ask for is computed.  Neighbours are the four
+ * nearest ones with periodic wrap-around; on a line grid (ny = 1, or
+ * nx = 1) only the two neighbours along the line exist, and a 1 x 1 grid
+ * has none.  Quantities (Wang & Mueser 2020):
+ *   a_r             n_c / n_tot
+ *   n_cl            contact points with at least one non-contact neighbour
+ *   a_yastrebov     (n_c - alpha n_cl) / n_tot                     (Eq. 22)
+ *   n_patches       periodic connected components of the contact
+ *   patch_size_char A_c = sum_i s_i^2 / sum_i s_i, s_i the patch areas:
+ *                   the expected area of the patch that a randomly picked
+ *                   contact point belongs to (length^2)
+ *   gbar_c          sqrt(<|grad h|^2>_c)                          (Eq. 8)
+ *   gbar_c_prime    sqrt(-<dh lap h>_c), dh = h - <h>_c            (Eq. 9)
+ *   kappa, kappa_c  from a_r = erf(sqrt(pi) kappa p* / 2) with
+ *                   p* = p/(E* gbar) and p*_c = p/(E* gbar_c)  (Eqs. 24, 8)
+ * Derivatives are taken on the whole periodic indenter, then averaged
+ * over the mask: spectral by default (spectral.h; exact for band-limited
+ * heights), one field at a time; or, with opts.fd, central differences
+ * h_x = (h[i+1] - h[i-1]) / 2dx and the 5-point Laplacian, which need no
+ * buffer and suit indenters with kinks (a kink makes the spectral
+ * derivatives ring over the whole cell).  Averages over an empty contact,
+ * and gbar_c_prime when -<dh lap h>_c < 0, are NaN.
+ */
+#ifndef RC_CONTACT_H
+#define RC_CONTACT_H
+
+#include <stddef.h>
+#include "fft.h"
+#include "grid.h"
+
+/* Yastrebov et al.'s (2017) contact-line weight, (pi - 1 + ln 2)/24. */
+#define RC_YASTREBOV_ALPHA ((3.14159265358979323846 - 1 + \
+	0.69314718055994530942) / 24)
+
+enum {
+	RC_CONTACT_COUNT = 1 << 0,	/* n_c, n_tot, a_r */
+	RC_CONTACT_LINE = 1 << 1,	/* n_cl, a_yastrebov */
+	RC_CONTACT_PATCHES = 1 << 2,	/* n_patches, patch_size_char */
+	RC_CONTACT_GRADIENT = 1 << 3,	/* gbar_c, gbar_c_prime */
+	RC_CONTACT_KAPPA = 1 << 4,	/* kappa, kappa_c (implies the above) */
+	RC_CONTACT_ALL = (1 << 5) - 1
+};
+
+typedef struct rc_contact_opts {
+	unsigned flags;
+	double alpha;		/* Eq. 22 weight (RC_YASTREBOV_ALPHA) */
+	/* For RC_CONTACT_KAPPA: the applied mean pressure, the contact
+	 * modulus E* and the rms gradient of the whole indenter. */
+	double pressure, modulus, gbar;
+	/* A plan of the grid's size to reuse for the gradients, or NULL to
+	 * make one for this call; its buffers are overwritten. */
+	rc_fft *fft;
+	int fd;			/* central differences instead of spectral */
+} rc_contact_opts;
+
+typedef struct rc_contact_stats {
+	size_t n_tot, n_c, n_cl, n_patches;
+	double a_r, a_yastrebov;
+	double patch_size_char;	/* A_c, in the square of the length unit */
+	double gbar_c, gbar_c_prime;
+	double kappa, kappa_c;
+} rc_contact_stats;
+
+void rc_contact_defaults(rc_contact_opts *o);
+
+/* Fields not asked for are set to NaN (sizes to 0).  Returns -1 only on
+ * an allocation failure or a plan of the wrong size. */
+int rc_contact_analyse(const rc_grid *h, const unsigned char *contact,
+    const rc_contact_opts *o, rc_contact_stats *st, rc_err *err);
+
+/* rms of the central-difference gradient over the whole grid (the
+ * finite-difference counterpart of rc_rms_gradient). */
+double rc_contact_gbar_fd(const rc_grid *h);
+
+/* The pieces, for callers that need only one. */
+size_t rc_contact_count(const unsigned char *contact, size_t n);
+size_t rc_contact_line(const unsigned char *contact, size_t nx, size_t ny);
+/* Patch count and sum of squared patch sizes in points (sum s_i^2). */
+int rc_contact_patches(const unsigned char *contact, size_t nx, size_t ny,
+    size_t *n_patches, double *sum_sq, rc_err *err);
+
+#endif

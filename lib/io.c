@@ -1,0 +1,602 @@
+/* io.c - format detection and dispatch, the buffered input every reader
+ * shares, and the checks every grid passes after reading. */
+#include "io.h"
+#include "io_internal.h"
+#include "atomic.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <fftw3.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/stat.h>
+
+/* Input of unknown length is read in pieces of this size, so a header that
+ * lies about the size costs at most one piece of memory. */
+#define CHUNK ((size_t)16 << 20)
+
+void
+rc_in_init(rc_in *in, FILE *fp)
+{
+	in->fp = fp;
+	in->pos = in->len = 0;
+	in->consumed = 0;
+	in->eof = 0;
+	in->error = 0;
+}
+
+static void
+fill(rc_in *in)
+{
+	size_t got;
+
+	if (in->eof || in->error)
+		return;
+	if (in->pos > 0) {
+		memmove(in->buf, in->buf + in->pos, in->len - in->pos);
+		in->len -= in->pos;
+		in->pos = 0;
+	}
+	if (in->len == RC_IN_BUFSIZE)
+		return;
+	got = fread(in->buf + in->len, 1, RC_IN_BUFSIZE - in->len, in->fp);
+	in->len += got;
+	if (got == 0) {
+		if (ferror(in->fp))
+			in->error = errno ? errno : EIO;
+		else
+			in->eof = 1;
+	}
+}
+
+size_t
+rc_in_peek(rc_in *in, size_t n, const unsigned char **p)
+{
+	if (n > RC_IN_BUFSIZE)
+		n = RC_IN_BUFSIZE;
+	while (in->len - in->pos < n && !in->eof && !in->error)
+		fill(in);
+	*p = in->buf + in->pos;
+	return in->len - in->pos < n ? in->len - in->pos : n;
+}
+
+int
+rc_in_getc(rc_in *in)
+{
+	if (in->pos == in->len) {
+		fill(in);
+		if (in->pos == in->len)
+			return EOF;
+	}
+	in->consumed++;
+	return in->buf[in->pos++];
+}
+
+size_t
+rc_in_read(rc_in *in, void *dst, size_t n)
+{
+	unsigned char *d = dst;
+	size_t have = in->len - in->pos, done, got;
+
+	done = have < n ? have : n;
+	memcpy(d, in->buf + in->pos, done);
+	in->pos += done;
+	/* Big reads bypass the buffer. */
+	while (done < n && !in->eof && !in->error) {
+		got = fread(d + done, 1, n - done, in->fp);
+		done += got;
+		if (got == 0) {
+			if (ferror(in->fp))
+				in->error = errno ? errno : EIO;
+			else
+				in->eof = 1;
+		}
+	}
+	in->consumed += done;
+	return done;
+}
+
+int
+rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len)
+{
+	size_t n = 0;
+	int c;
+
+	for (;;) {
+		if ((c = rc_in_getc(in)) == EOF) {
+			buf[n] = '\0';
+			*len = n;
+			return n > 0 ? 2 : 0;
+		}
+		if (c == '\n') {
+			buf[n] = '\0';
+			*len = n;
+			return 1;
+		}
+		if (n + 1 >= cap) {
+			buf[n] = '\0';
+			*len = n;
+			return -1;
+		}
+		buf[n++] = (char)c;
+	}
+}
+
+int
+rc_in_at_end(rc_in *in)
+{
+	const unsigned char *p;
+
+	return rc_in_peek(in, 1, &p) == 0;
+}
+
+int
+rc_in_check(const rc_in *in, rc_err *err)
+{
+	if (in->error)
+		return rc_seterr(err, "read error: %s", strerror(in->error));
+	return 0;
+}
+
+/* Bytes left in the input if it is a regular file, else -1. */
+static long long
+remaining(rc_in *in)
+{
+	struct stat st;
+	off_t at;
+	int fd = fileno(in->fp);
+
+	if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))
+		return -1;
+	if ((at = ftello(in->fp)) < 0 || at > st.st_size)
+		return -1;
+	return (long long)(st.st_size - at) + (long long)(in->len - in->pos);
+}
+
+rc_grid *
+rc_io_grid_alloc(size_t nx, size_t ny, double lx, double ly, rc_err *err)
+{
+	rc_grid *g;
+	double *z;
+
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		return NULL;
+	if ((z = fftw_alloc_real(nx * ny)) == NULL) {
+		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
+		    nx * ny * sizeof(double), nx, ny);
+		return NULL;
+	}
+	/* A 1x1 grid carries the defaults; its value array is replaced. */
+	if ((g = rc_grid_new(1, 1, lx, ly, err)) == NULL) {
+		fftw_free(z);
+		return NULL;
+	}
+	fftw_free(g->z);
+	g->z = z;
+	g->nx = nx;
+	g->ny = ny;
+	return g;
+}
+
+static double
+decode_one(const unsigned char *p, const rc_layout *l)
+{
+	unsigned char b[8];
+	uint64_t u = 0;
+	double d;
+	float f;
+
+	for (size_t k = 0; k < l->elsize; k++)
+		b[k] = l->big_endian ? p[l->elsize - 1 - k] : p[k];
+	for (size_t k = l->elsize; k-- > 0;)
+		u = u << 8 | b[k];
+	if (l->elsize == 8) {
+		memcpy(&d, &u, 8);
+		return d;
+	}
+	uint32_t u32 = (uint32_t)u;
+	memcpy(&f, &u32, 4);
+	return f;
+}
+
+/* Values first .. first+n-1 of the file, raw in p, into g. */
+static void
+decode(const unsigned char *p, size_t first, size_t n, const rc_layout *l,
+    rc_grid *g)
+{
+	for (size_t k = 0; k < n; k++) {
+		size_t idx = first + k, dst;
+
+		if (l->fortran)		/* file index = i * ny + j */
+			dst = (idx % g->ny) * g->nx + idx / g->ny;
+		else
+			dst = idx;
+		g->z[dst] = decode_one(p + k * l->elsize, l);
+	}
+}
+
+static int
+check_trailing(rc_in *in, rc_err *err)
+{
+	const unsigned char *p;
+	size_t n = rc_in_peek(in, 4096, &p);
+
+	if (rc_in_check(in, err) != 0)
+		return -1;
+	if (n > 0)
+		return rc_seterr(err, "trailing garbage: %s%zu bytes after the data",
+		    n == 4096 ? "at least " : "", n);
+	return 0;
+}
+
+rc_grid *
+rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
+    const rc_layout *l, rc_err *err)
+{
+	unsigned char **chunk = NULL, *buf = NULL;
+	size_t need, nchunk = 0, got = 0, count, k;
+	long long left;
+	rc_grid *g = NULL;
+
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		return NULL;
+	count = nx * ny;
+	need = count * l->elsize;	/* at most 2^39: no overflow */
+	left = remaining(in);
+	if (left >= 0) {
+		/* A regular file: its size tells before anything is allocated. */
+		if ((unsigned long long)left < need) {
+			rc_seterr(err, "truncated: expected %zu data bytes, got %lld",
+			    need, left);
+			return NULL;
+		}
+		if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+			return NULL;
+		if ((buf = rc_malloc(CHUNK < need ? CHUNK : need, err)) == NULL)
+			goto fail;
+		for (k = 0; got < need; ) {
+			size_t want = need - got < CHUNK ? need - got : CHUNK, r;
+
+			r = rc_in_read(in, buf, want);
+			/* A piece holds whole values: CHUNK is a multiple of 8. */
+			decode(buf, k, r / l->elsize, l, g);
+			k += r / l->elsize;
+			got += r;
+			if (r < want) {
+				if (rc_in_check(in, err) == 0)
+					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
+					    need, got);
+				goto fail;
+			}
+		}
+		free(buf);
+		buf = NULL;
+	} else {
+		/* A pipe: read piece by piece, allocate the grid once all is in. */
+		size_t maxchunks = (need + CHUNK - 1) / CHUNK;
+
+		if ((chunk = rc_calloc(maxchunks, sizeof(*chunk), err)) == NULL)
+			return NULL;
+		while (got < need) {
+			size_t want = need - got < CHUNK ? need - got : CHUNK, r;
+
+			if ((chunk[nchunk] = rc_malloc(want, err)) == NULL)
+				goto fail;
+			r = rc_in_read(in, chunk[nchunk++], want);
+			got += r;
+			if (r < want) {
+				if (rc_in_check(in, err) == 0)
+					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
+					    need, got);
+				goto fail;
+			}
+		}
+		if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+			goto fail;
+		for (k = 0; k < nchunk; k++) {
+			size_t pieceval = CHUNK / l->elsize;
+			size_t n = k + 1 < nchunk ? pieceval : count - k * pieceval;
+
+			decode(chunk[k], k * pieceval, n, l, g);
+			free(chunk[k]);
+			chunk[k] = NULL;
+		}
+		free(chunk);
+		chunk = NULL;
+	}
+	if (check_trailing(in, err) != 0)
+		goto fail;
+	return g;
+fail:
+	if (chunk != NULL) {
+		for (k = 0; k < nchunk; k++)
+			free(chunk[k]);
+		free(chunk);
+	}
+	free(buf);
+	rc_grid_free(g);
+	return NULL;
+}
+
+int
+rc_parse_size(const char *s, size_t *v)
+{
+	unsigned long long u = 0;
+
+	if (*s == '\0')
+		return -1;
+	for (; *s; s++) {
+		if (*s < '0' || *s > '9')
+			return -1;
+		if (u > (ULLONG_MAX - 9) / 10)
+			return -1;
+		u = u * 10 + (unsigned)(*s - '0');
+	}
+	if (u > SIZE_MAX)
+		return -1;
+	*v = (size_t)u;
+	return 0;
+}
+
+int
+rc_parse_double(const char *s, double *v)
+{
+	char *end;
+
+	if (*s == '\0' || isspace((unsigned char)*s))
+		return -1;
+	errno = 0;
+	*v = strtod(s, &end);
+	if (end == s || *end != '\0')
+		return -1;
+	/* Underflow to a denormal is a legal value; overflow is not. */
+	if (errno == ERANGE && isinf(*v))
+		return -1;
+	return 0;
+}
+
+const char *
+rc_io_quote(char *buf, size_t len, const char *s, size_t n)
+{
+	size_t o = 0;
+
+	for (size_t i = 0; i < n && o + 5 < len; i++) {
+		unsigned char c = (unsigned char)s[i];
+
+		if (o >= 40) {
+			memcpy(buf + o, "...", 3);
+			o += 3;
+			break;
+		}
+		if (c >= 0x20 && c < 0x7f)
+			buf[o++] = (char)c;
+		else
+			o += (size_t)snprintf(buf + o, len - o, "\\x%02x", c);
+	}
+	buf[o < len ? o : len - 1] = '\0';
+	return buf;
+}
+
+void
+rc_put_le64(unsigned char *p, double v)
+{
+	uint64_t u;
+
+	memcpy(&u, &v, 8);
+	for (int k = 0; k < 8; k++, u >>= 8)
+		p[k] = (unsigned char)(u & 0xff);
+}
+
+void
+rc_put_le32(unsigned char *p, uint32_t v)
+{
+	for (int k = 0; k < 4; k++, v >>= 8)
+		p[k] = (unsigned char)(v & 0xff);
+}
+
+void
+rc_put_le32f(unsigned char *p, float v)
+{
+	uint32_t u;
+
+	memcpy(&u, &v, 4);
+	rc_put_le32(p, u);
+}
+
+void
+rc_put_le16(unsigned char *p, uint16_t v)
+{
+	p[0] = (unsigned char)(v & 0xff);
+	p[1] = (unsigned char)(v >> 8);
+}
+
+uint32_t
+rc_get_le32(const unsigned char *p)
+{
+	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
+	    (uint32_t)p[3] << 24;
+}
+
+uint16_t
+rc_get_le16(const unsigned char *p)
+{
+	return (uint16_t)(p[0] | p[1] << 8);
+}
+
+int
+rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err)
+{
+	if (n > 0 && fwrite(p, 1, n, fp) != n)
+		return rc_seterr(err, "write error: %s", strerror(errno));
+	return 0;
+}
+
+int
+rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
+    rc_err *err)
+{
+	unsigned char buf[8192];
+	size_t per = sizeof(buf) / elsize;
+
+	for (size_t i = 0; i < n; i += per) {
+		size_t m = n - i < per ? n - i : per;
+
+		for (size_t k = 0; k < m; k++)
+			if (elsize == 8)
+				rc_put_le64(buf + 8 * k, z[i + k]);
+			else
+				rc_put_le32f(buf + 4 * k, (float)z[i + k]);
+		if (rc_io_write(fp, buf, m * elsize, err) != 0)
+			return -1;
+	}
+	return 0;
+}
+
+/* What every grid must satisfy, whatever format it came in. */
+static int
+check_values(const rc_grid *g, const rc_read_opts *o, rc_err *err)
+{
+	size_t n = rc_grid_size(g);
+
+	if (!(o != NULL && o->allow_nonfinite))
+		for (size_t k = 0; k < n; k++)
+			if (!isfinite(g->z[k]))
+				return rc_seterr(err, "value at i=%zu, j=%zu is %s; "
+				    "non-finite values are not allowed",
+				    k % g->nx, k / g->nx,
+				    isnan(g->z[k]) ? "NaN" : "infinite");
+	if (g->kind == RC_KIND_MASK)
+		for (size_t k = 0; k < n; k++)
+			if (g->z[k] != 0 && g->z[k] != 1)
+				return rc_seterr(err, "mask value at i=%zu, j=%zu is %.17g; "
+				    "a mask holds only 0 and 1", k % g->nx, k / g->nx,
+				    g->z[k]);
+	return 0;
+}
+
+static const char npy_magic[] = "\x93NUMPY";
+/* Any version: the reader names the one it knows. */
+static const char gsf_magic[] = "Gwyddion Simple Field";
+
+rc_grid *
+rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err)
+{
+	rc_in *in;
+	const unsigned char *p;
+	rc_grid *g;
+	size_t n;
+
+	if ((in = rc_malloc(sizeof(*in), err)) == NULL)
+		return NULL;
+	rc_in_init(in, fp);
+	n = rc_in_peek(in, 32, &p);
+	if (rc_in_check(in, err) != 0)
+		g = NULL;
+	else if (n == 0) {
+		rc_seterr(err, "empty input");
+		g = NULL;
+	} else if (n >= 5 && memcmp(p, "#surf", 5) == 0)
+		g = rc_surf_read(in, o, err);
+	else if (n >= 6 && memcmp(p, npy_magic, 6) == 0)
+		g = rc_npy_read(in, o, err);
+	else if (n >= sizeof(gsf_magic) - 1 &&
+	    memcmp(p, gsf_magic, sizeof(gsf_magic) - 1) == 0)
+		g = rc_gsf_read(in, o, err);
+	else
+		g = rc_txt_read(in, o, err);
+	free(in);
+	if (g != NULL && check_values(g, o, err) != 0) {
+		rc_grid_free(g);
+		g = NULL;
+	}
+	return g;
+}
+
+rc_grid *
+rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err)
+{
+	struct stat st;
+	rc_grid *g;
+	FILE *fp;
+
+	if (rc_is_stdio(path))
+		return rc_grid_read_stream(stdin, o, err);
+	if ((fp = fopen(path, "rb")) == NULL) {
+		rc_seterr(err, "%s", strerror(errno));
+		return NULL;
+	}
+	if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
+		fclose(fp);
+		rc_seterr(err, "is a directory");
+		return NULL;
+	}
+	g = rc_grid_read_stream(fp, o, err);
+	fclose(fp);
+	return g;
+}
+
+int
+rc_format_from_name(const char *path)
+{
+	static const char *ext[] = { "surf", "npy", "gsf", "txt" };
+	const char *base, *dot;
+
+	if (rc_is_stdio(path))
+		return RC_FMT_SURF;
+	base = strrchr(path, '/');
+	base = base ? base + 1 : path;
+	if ((dot = strrchr(base, '.')) == NULL || dot == base)
+		return RC_FMT_SURF;
+	for (int f = 0; f < 4; f++)
+		if (strcasecmp(dot + 1, ext[f]) == 0)
+			return f;
+	return -1;
+}
+
+const char *
+rc_format_name(enum rc_format f)
+{
+	switch (f) {
+	case RC_FMT_SURF: return "surf";
+	case RC_FMT_NPY: return "npy";
+	case RC_FMT_GSF: return "gsf";
+	case RC_FMT_TXT: return "txt";
+	}
+	return "unknown";
+}
+
+int
+rc_grid_write_stream(const rc_grid *g, FILE *fp, enum rc_format fmt,
+    rc_err *err)
+{
+	int r;
+
+	switch (fmt) {
+	case RC_FMT_SURF: r = rc_surf_write(g, fp, err); break;
+	case RC_FMT_NPY: r = rc_npy_write(g, fp, err); break;
+	case RC_FMT_GSF: r = rc_gsf_write(g, fp, err); break;
+	case RC_FMT_TXT: r = rc_txt_write(g, fp, err); break;
+	default: return rc_seterr(err, "unknown output format %d", (int)fmt);
+	}
+	if (r == 0 && (fflush(fp) != 0 || ferror(fp)))
+		return rc_seterr(err, "write error: %s", strerror(errno));
+	return r;
+}
+
+int
+rc_grid_write(const rc_grid *g, const char *path, enum rc_format fmt,
+    rc_err *err)
+{
+	rc_atomic a;
+
+	if (rc_atomic_open(&a, path, err) != 0)
+		return -1;
+	if (rc_grid_write_stream(g, a.fp, fmt, err) != 0) {
+		rc_atomic_abort(&a);
+		return -1;
+	}
+	return rc_atomic_commit(&a, err);
+}

@@ -1,0 +1,331 @@
+/* io_gsf.c - Gwyddion Simple Field 1.0.
+ *
+ * "Gwyddion Simple Field 1.0\n", then "Name = Value" lines, then 1 to 4
+ * NUL bytes so the data start at a multiple of 4 (Gwyddion puts the data
+ * at the first multiple of 4 after the first NUL), then XRes*YRes float32
+ * little-endian values, row by row.  Gwyddion reads XReal and YReal in the
+ * base unit of XYUnits (it drops SI prefixes), so lengths in a prefixed
+ * metre unit are written in metres.  Our kind, unit, metadata and history
+ * travel as extra keys (surf.kind, surf.unit, surf.meta.KEY, surf.history),
+ * which Gwyddion shows as metadata.
+ */
+#include "io_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAGIC "Gwyddion Simple Field 1.0\n"
+
+/* Units per metre: exact in double, so x / per_metre is the correctly
+ * rounded length in metres (2.5 um is written as 2.5e-06). */
+static const struct {
+	const char *name;
+	double per_metre;
+} length_units[] = {
+	{ "m", 1 }, { "mm", 1e3 }, { "um", 1e6 }, { "\xc2\xb5m", 1e6 },
+	{ "nm", 1e9 }, { "pm", 1e12 },
+};
+
+/* Units per metre, or 0 if u is not a length unit we know. */
+static double
+per_metre(const char *u)
+{
+	for (size_t i = 0; i < sizeof(length_units) / sizeof(length_units[0]); i++)
+		if (strcmp(u, length_units[i].name) == 0)
+			return length_units[i].per_metre;
+	return 0;
+}
+
+/* Do the values share the length unit of the grid? */
+static int
+is_length(enum rc_kind k)
+{
+	return k == RC_KIND_HEIGHT || k == RC_KIND_GAP || k == RC_KIND_DISPLACEMENT;
+}
+
+static int
+put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
+{
+	int n = fprintf(fp, "%s = %s\n", key, val);
+
+	if (n < 0)
+		return rc_seterr(err, "write error");
+	*len += (size_t)n;
+	return 0;
+}
+
+int
+rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
+{
+	static const char nul[4] = { 0 };
+	size_t n = rc_grid_size(g), len = strlen(MAGIC);
+	double scale = 1, zscale = 1;
+	const char *xyunit = g->unit;
+	char num[64];
+	float *f;
+
+	/* Write lengths in metres when the unit is a prefixed metre. */
+	if (per_metre(g->unit) > 0) {
+		scale = per_metre(g->unit);
+		xyunit = "m";
+		if (is_length(g->kind))
+			zscale = scale;
+	}
+	for (size_t k = 0; k < n; k++)
+		if (isfinite(g->z[k]) && fabs(g->z[k] / zscale) > FLT_MAX)
+			return rc_seterr(err, "value %g at i=%zu, j=%zu is beyond the "
+			    "float32 range of .gsf", g->z[k], k % g->nx, k / g->nx);
+	if (rc_io_write(fp, MAGIC, len, err) != 0)
+		return -1;
+	snprintf(num, sizeof(num), "%zu", g->nx);
+	if (put(fp, &len, "XRes", num, err) != 0)
+		return -1;
+	snprintf(num, sizeof(num), "%zu", g->ny);
+	if (put(fp, &len, "YRes", num, err) != 0)
+		return -1;
+	rc_format_double(num, sizeof(num), g->lx / scale);
+	if (put(fp, &len, "XReal", num, err) != 0)
+		return -1;
+	rc_format_double(num, sizeof(num), g->ly / scale);
+	if (put(fp, &len, "YReal", num, err) != 0)
+		return -1;
+	if (xyunit[0] != '\0' && (put(fp, &len, "XYUnits", xyunit, err) != 0 ||
+	    (is_length(g->kind) && put(fp, &len, "ZUnits", xyunit, err) != 0)))
+		return -1;
+	if (put(fp, &len, "surf.kind", rc_kind_name(g->kind), err) != 0 ||
+	    (g->unit[0] != '\0' && put(fp, &len, "surf.unit", g->unit, err) != 0))
+		return -1;
+	for (size_t i = 0; i < g->nmeta; i++) {
+		char key[300];
+
+		snprintf(key, sizeof(key), "surf.meta.%s", g->meta[i].key);
+		if (put(fp, &len, key, g->meta[i].val, err) != 0)
+			return -1;
+	}
+	for (size_t i = 0; i < g->nhistory; i++)
+		if (put(fp, &len, "surf.history", g->history[i], err) != 0)
+			return -1;
+	if (rc_io_write(fp, nul, 4 - len % 4, err) != 0)
+		return -1;
+	if (zscale == 1)
+		return rc_io_write_values(fp, g->z, n, 4, err);
+	/* Scaled: through a small buffer. */
+	if ((f = rc_malloc(4096 * sizeof(double), err)) == NULL)
+		return -1;
+	for (size_t k = 0; k < n; k += 4096) {
+		size_t m = n - k < 4096 ? n - k : 4096;
+		double *d = (double *)f;
+
+		for (size_t i = 0; i < m; i++)
+			d[i] = g->z[k + i] / zscale;
+		if (rc_io_write_values(fp, d, m, 4, err) != 0) {
+			free(f);
+			return -1;
+		}
+	}
+	free(f);
+	return 0;
+}
+
+struct field {
+	char *key, *val;
+};
+
+static void
+trim(char **s)
+{
+	char *e;
+
+	while (**s == ' ' || **s == '\t')
+		(*s)++;
+	e = *s + strlen(*s);
+	while (e > *s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'))
+		e--;
+	*e = '\0';
+}
+
+static const char *
+lookup(const struct field *f, size_t n, const char *key)
+{
+	const char *v = NULL;
+
+	/* The last one wins, as in Gwyddion's hash table. */
+	for (size_t i = 0; i < n; i++)
+		if (strcmp(f[i].key, key) == 0)
+			v = f[i].val;
+	return v;
+}
+
+static int
+standard(const char *key)
+{
+	static const char *names[] = { "XRes", "YRes", "XReal", "YReal",
+	    "XYUnits", "ZUnits" };
+
+	for (size_t i = 0; i < sizeof(names) / sizeof(names[0]); i++)
+		if (strcmp(key, names[i]) == 0)
+			return 1;
+	return 0;
+}
+
+static int
+valid_key(const char *key)
+{
+	for (const char *p = key; *p; p++)
+		if (!(*p == '_' || *p == '-' || *p == '.' ||
+		    (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
+		    (*p >= '0' && *p <= '9')))
+			return 0;
+	return *key != '\0';
+}
+
+rc_grid *
+rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+{
+	char *head = NULL, *line, *next, q[64];
+	struct field *f = NULL;
+	size_t n = 0, nf = 0, nx, ny, lineno = 1;
+	const char *v, *xyunit, *unit;
+	double lx = 1, ly = 1, scale = 1;
+	rc_layout layout = { 4, 0, 0 };
+	rc_grid *g = NULL;
+	int c, kind = RC_KIND_HEIGHT;
+
+	if (o != NULL && o->have_l) {
+		lx = o->lx;
+		ly = o->ly;
+	}
+	for (size_t k = 0; k < strlen(MAGIC); k++)
+		if (rc_in_getc(in) != MAGIC[k]) {
+			rc_seterr(err, "bad magic line: expected 'Gwyddion Simple Field 1.0'");
+			return NULL;
+		}
+	if ((head = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
+		return NULL;
+	/* The header runs to the first NUL. */
+	while ((c = rc_in_getc(in)) != 0) {
+		if (c == EOF) {
+			if (rc_in_check(in, err) == 0)
+				rc_seterr(err, "truncated header: no NUL byte ends it");
+			goto out;
+		}
+		if (n + strlen(MAGIC) >= RC_HEADER_MAX) {
+			rc_seterr(err, "header longer than %zu bytes", RC_HEADER_MAX);
+			goto out;
+		}
+		head[n++] = (char)c;
+	}
+	head[n] = '\0';
+	/* Data at the next multiple of 4 after that NUL; the rest is padding. */
+	while (in->consumed % 4 != 0) {
+		if ((c = rc_in_getc(in)) == 0)
+			continue;
+		if (c != EOF)
+			rc_seterr(err, "header padding holds a non-NUL byte");
+		else if (rc_in_check(in, err) == 0)
+			rc_seterr(err, "truncated header padding");
+		goto out;
+	}
+	if ((f = rc_calloc(n / 2 + 1, sizeof(*f), err)) == NULL)
+		goto out;
+	for (line = head; line != NULL; line = next, lineno++) {
+		char *eq, *key, *val;
+
+		if ((next = strchr(line, '\n')) != NULL)
+			*next++ = '\0';
+		key = line;
+		trim(&key);
+		if (*key == '\0')
+			continue;
+		if ((eq = strchr(line, '=')) == NULL) {
+			rc_seterr(err, "header line %zu is not 'Name = Value': '%s'",
+			    lineno + 1, rc_io_quote(q, sizeof(q), key, strlen(key)));
+			goto out;
+		}
+		*eq = '\0';
+		key = line;
+		val = eq + 1;
+		trim(&key);
+		trim(&val);
+		f[nf].key = key;
+		f[nf++].val = val;
+	}
+	if ((v = lookup(f, nf, "XRes")) == NULL || (v = lookup(f, nf, "YRes")) == NULL) {
+		rc_seterr(err, "header lacks %s", lookup(f, nf, "XRes") ? "YRes" : "XRes");
+		goto out;
+	}
+	if (rc_parse_size(lookup(f, nf, "XRes"), &nx) != 0 ||
+	    rc_parse_size(lookup(f, nf, "YRes"), &ny) != 0) {
+		rc_seterr(err, "XRes, YRes must be positive integers");
+		goto out;
+	}
+	if ((v = lookup(f, nf, "XReal")) != NULL && rc_parse_double(v, &lx) != 0) {
+		rc_seterr(err, "XReal '%s' is not a number", rc_io_quote(q, sizeof(q), v, strlen(v)));
+		goto out;
+	}
+	if ((v = lookup(f, nf, "YReal")) != NULL && rc_parse_double(v, &ly) != 0) {
+		rc_seterr(err, "YReal '%s' is not a number", rc_io_quote(q, sizeof(q), v, strlen(v)));
+		goto out;
+	}
+	if ((v = lookup(f, nf, "surf.kind")) != NULL && (kind = rc_kind_parse(v)) < 0) {
+		rc_seterr(err, "surf.kind '%s' is unknown", rc_io_quote(q, sizeof(q), v, strlen(v)));
+		goto out;
+	}
+	xyunit = lookup(f, nf, "XYUnits");
+	unit = lookup(f, nf, "surf.unit");
+	/* Our own file in metres: back to the unit it was written from. */
+	if (unit != NULL && xyunit != NULL && strcmp(xyunit, "m") == 0 &&
+	    per_metre(unit) > 0)
+		scale = per_metre(unit);
+	else
+		unit = xyunit;
+	if (unit != NULL && strlen(unit) >= sizeof(g->unit)) {
+		rc_seterr(err, "unit '%s' longer than %zu characters", rc_io_quote(q,
+		    sizeof(q), unit, strlen(unit)), sizeof(g->unit) - 1);
+		goto out;
+	}
+	lx *= scale;
+	ly *= scale;
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		goto out;
+	if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
+		goto out;
+	g->kind = (enum rc_kind)kind;
+	if (unit != NULL)
+		strcpy(g->unit, unit);
+	if (scale != 1 && is_length(g->kind))
+		for (size_t k = 0; k < nx * ny; k++)
+			g->z[k] *= scale;
+	for (size_t i = 0; i < nf; i++) {
+		const char *key = f[i].key;
+		int r = 0;
+
+		if (strncmp(key, "surf.meta.", 10) == 0)
+			r = rc_grid_meta_set(g, key + 10, f[i].val, err);
+		else if (strcmp(key, "surf.history") == 0)
+			r = rc_grid_history_add(g, f[i].val, err);
+		else if (strncmp(key, "surf.", 5) == 0 || standard(key))
+			continue;
+		else if (valid_key(key))
+			/* Foreign fields (XOffset, Title, ...) are kept as metadata. */
+			r = rc_grid_meta_set(g, key, f[i].val, err);
+		else
+			continue;	/* a name our metadata cannot hold */
+		if (r != 0) {
+			char msg[RC_ERRLEN];
+
+			snprintf(msg, sizeof(msg), "%s", err ? err->msg : "");
+			rc_seterr(err, "header field '%s': %s", rc_io_quote(q, sizeof(q),
+			    key, strlen(key)), msg);
+			rc_grid_free(g);
+			g = NULL;
+			goto out;
+		}
+	}
+out:
+	free(f);
+	free(head);
+	return g;
+}

@@ -1,0 +1,90 @@
+/* io_internal.h - what the format readers and writers share.
+ *
+ * Readers never seek: the input may be a pipe.  rc_in wraps a FILE with a
+ * buffer the format detector and the header parsers can peek into, and
+ * counts the bytes consumed so far (the data offset of a file).
+ */
+#ifndef RC_IO_INTERNAL_H
+#define RC_IO_INTERNAL_H
+
+#include <stdint.h>
+#include <stdio.h>
+#include "grid.h"
+#include "io.h"
+#include "rc_err.h"
+
+#define RC_IN_BUFSIZE 65536
+/* No header of any format may be longer than this. */
+#define RC_HEADER_MAX ((size_t)1 << 20)
+
+typedef struct rc_in {
+	FILE *fp;
+	unsigned char buf[RC_IN_BUFSIZE];
+	size_t pos, len;	/* unread bytes are buf[pos .. len) */
+	uint64_t consumed;	/* bytes handed to the caller so far */
+	int eof;		/* the FILE reported end of file */
+	int error;		/* errno of a read error, 0 if none */
+} rc_in;
+
+/* How raw values are laid out in a file. */
+typedef struct rc_layout {
+	size_t elsize;		/* 4 (float32) or 8 (float64) */
+	int big_endian;
+	int fortran;		/* column-major (npy fortran_order) */
+} rc_layout;
+
+void rc_in_init(rc_in *in, FILE *fp);
+/* Buffer at least n bytes (n <= RC_IN_BUFSIZE) if the input has them;
+ * *p points at them.  Returns how many are available (< n only at end). */
+size_t rc_in_peek(rc_in *in, size_t n, const unsigned char **p);
+int rc_in_getc(rc_in *in);
+size_t rc_in_read(rc_in *in, void *dst, size_t n);
+/* One line into buf (NUL-terminated, without the newline); *len its
+ * length (it may contain NUL bytes).  Returns 1 for a line ended by '\n',
+ * 2 for a last line without one, 0 at end of input, -1 if the line does
+ * not fit in cap - 1 bytes. */
+int rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len);
+/* 1 when no byte is left. */
+int rc_in_at_end(rc_in *in);
+/* A read error becomes an rc_err message; returns -1 if there was one. */
+int rc_in_check(const rc_in *in, rc_err *err);
+
+/* Read nx*ny values laid out as l into a new grid of that shape, never
+ * allocating more than the input proves to hold, and check that nothing
+ * follows them. */
+rc_grid *rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx,
+    double ly, const rc_layout *l, rc_err *err);
+/* A grid whose values are not initialised (the reader fills them). */
+rc_grid *rc_io_grid_alloc(size_t nx, size_t ny, double lx, double ly,
+    rc_err *err);
+
+/* Parsers of header values; 0 on success. */
+int rc_parse_size(const char *s, size_t *v);
+int rc_parse_double(const char *s, double *v);
+/* Make a string printable for an error message (at most 40 characters). */
+const char *rc_io_quote(char *buf, size_t len, const char *s, size_t n);
+
+/* Little-endian encoding, independent of the host's byte order. */
+void rc_put_le64(unsigned char *p, double v);
+void rc_put_le32f(unsigned char *p, float v);
+void rc_put_le32(unsigned char *p, uint32_t v);
+void rc_put_le16(unsigned char *p, uint16_t v);
+uint32_t rc_get_le32(const unsigned char *p);
+uint16_t rc_get_le16(const unsigned char *p);
+/* Write n bytes; -1 with a message on failure. */
+int rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err);
+/* Values as float64 LE (elsize 8) or float32 LE (elsize 4). */
+int rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
+    rc_err *err);
+
+/* The format readers (after detection) and writers. */
+rc_grid *rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+int rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err);
+
+#endif

@@ -1,0 +1,351 @@
+/* io_surf.c - the native format: a text header of "key = value" lines,
+ * then nx*ny float64 little-endian values (see surf(5)). */
+#include "io_internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define MAGIC "#surf 1"
+#define END "end_header"
+
+/* A growing string for the header. */
+struct buf {
+	char *s;
+	size_t len, cap;
+	int bad;
+};
+
+static void
+add(struct buf *b, const char *s)
+{
+	size_t n = strlen(s);
+
+	if (b->bad)
+		return;
+	if (b->len + n + 1 > b->cap) {
+		size_t cap = (b->len + n + 1) * 2;
+		char *p = realloc(b->s, cap);
+
+		if (p == NULL) {
+			b->bad = 1;
+			return;
+		}
+		b->s = p;
+		b->cap = cap;
+	}
+	memcpy(b->s + b->len, s, n + 1);
+	b->len += n;
+}
+
+static void
+addkv(struct buf *b, const char *key, const char *val)
+{
+	add(b, key);
+	add(b, " = ");
+	add(b, val);
+	add(b, "\n");
+}
+
+int
+rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
+{
+	struct buf head = { 0 }, tail = { 0 };
+	char num[64], line[96];
+	size_t offset, total, pad;
+	int r = -1;
+
+	add(&head, MAGIC "\n# rough-contact grid; float64 LE values from "
+	    "data_offset on; see surf(5)\n");
+	snprintf(num, sizeof(num), "%zu", g->nx);
+	addkv(&head, "nx", num);
+	snprintf(num, sizeof(num), "%zu", g->ny);
+	addkv(&head, "ny", num);
+	rc_format_double(num, sizeof(num), g->lx);
+	addkv(&head, "lx", num);
+	rc_format_double(num, sizeof(num), g->ly);
+	addkv(&head, "ly", num);
+	if (g->unit[0] != '\0')
+		addkv(&head, "unit", g->unit);
+	addkv(&head, "kind", rc_kind_name(g->kind));
+	addkv(&head, "encoding", "float64-le");
+	for (size_t i = 0; i < g->nmeta; i++) {
+		add(&tail, "meta.");
+		addkv(&tail, g->meta[i].key, g->meta[i].val);
+	}
+	for (size_t i = 0; i < g->nhistory; i++)
+		addkv(&tail, "history", g->history[i]);
+	if (head.bad || tail.bad) {
+		rc_seterr(err, "out of memory");
+		goto out;
+	}
+	/* data_offset = the header's length, a multiple of 8 so the values can
+	 * be addressed directly (MPI-IO, numpy.memmap).  Its own digits count,
+	 * so iterate to the fixed point (two rounds at most). */
+	offset = 0;
+	for (;;) {
+		snprintf(line, sizeof(line), "data_offset = %zu\n", offset);
+		total = head.len + strlen(line) + tail.len + strlen(END) + 1;
+		pad = (8 - total % 8) % 8;
+		if (total + pad == offset)
+			break;
+		offset = total + pad;
+	}
+	if (offset > RC_HEADER_MAX) {
+		rc_seterr(err, "header of %zu bytes exceeds the %zu-byte limit "
+		    "(too much metadata or history)", offset, RC_HEADER_MAX);
+		goto out;
+	}
+	if (rc_io_write(fp, head.s, head.len, err) != 0 ||
+	    rc_io_write(fp, line, strlen(line), err) != 0 ||
+	    rc_io_write(fp, tail.s, tail.len, err) != 0 ||
+	    rc_io_write(fp, END, strlen(END), err) != 0 ||
+	    rc_io_write(fp, "        ", pad, err) != 0 ||
+	    rc_io_write(fp, "\n", 1, err) != 0)
+		goto out;
+	r = rc_io_write_values(fp, g->z, rc_grid_size(g), 8, err);
+out:
+	free(head.s);
+	free(tail.s);
+	return r;
+}
+
+static int
+valid_key_char(int c)
+{
+	return c == '_' || c == '-' || c == '.' || (c >= 'a' && c <= 'z') ||
+	    (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
+}
+
+/* Split "key = value" in place; blanks around both are not significant. */
+static int
+split(char *line, char **key, char **val)
+{
+	char *eq = strchr(line, '='), *e;
+
+	if (eq == NULL)
+		return -1;
+	*eq = '\0';
+	for (*key = line; **key == ' ' || **key == '\t'; (*key)++)
+		;
+	for (e = eq; e > *key && (e[-1] == ' ' || e[-1] == '\t'); e--)
+		;
+	*e = '\0';
+	if (**key == '\0')
+		return -1;
+	for (e = *key; *e; e++)
+		if (!valid_key_char((unsigned char)*e))
+			return -1;
+	for (*val = eq + 1; **val == ' ' || **val == '\t'; (*val)++)
+		;
+	for (e = *val + strlen(*val); e > *val &&
+	    (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'); e--)
+		;
+	*e = '\0';
+	return 0;
+}
+
+enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_N };
+static const char *keys[K_N] = {
+	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset"
+};
+
+rc_grid *
+rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+{
+	char *line = NULL, *vals[K_N] = { 0 }, *key, *val, q[64];
+	char **hist = NULL, **mkey = NULL, **mval = NULL;
+	size_t len, nhist = 0, nmeta = 0, nx = 0, ny = 0, offset = 0, lineno = 0;
+	double lx = 0, ly = 0;
+	rc_layout layout = { 8, 0, 0 };
+	rc_grid *g = NULL;
+	int r, kind = 0, done = 0;
+
+	(void)o;
+	if ((line = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
+		return NULL;
+	while (!done) {
+		/* The header, newlines included, fits in RC_HEADER_MAX bytes. */
+		size_t cap = RC_HEADER_MAX - (size_t)in->consumed;
+
+		lineno++;
+		r = cap < 2 ? -1 : rc_in_line(in, line, cap, &len);
+		if (r == -1) {
+			rc_seterr(err, "header longer than %zu bytes (no '" END "' line)",
+			    RC_HEADER_MAX);
+			goto fail;
+		}
+		if (r == 0 || r == 2) {
+			if (rc_in_check(in, err) == 0)
+				rc_seterr(err, "truncated header: input ends at line %zu "
+				    "before the '" END "' line", lineno);
+			goto fail;
+		}
+		if (strlen(line) != len) {
+			rc_seterr(err, "header line %zu contains a NUL byte", lineno);
+			goto fail;
+		}
+		if (lineno == 1) {
+			if (strcmp(line, MAGIC) != 0) {
+				if (strncmp(line, "#surf ", 6) == 0)
+					rc_seterr(err, "format version '%s': this reader "
+					    "knows '" MAGIC "'", rc_io_quote(q, sizeof(q), line, len));
+				else
+					rc_seterr(err, "bad magic line '%s': expected '" MAGIC "'",
+					    rc_io_quote(q, sizeof(q), line, len));
+				goto fail;
+			}
+			continue;
+		}
+		if (line[0] == '#')
+			continue;
+		for (size_t i = 0; i < len; i++)
+			if ((unsigned char)line[i] < 0x20 && line[i] != '\t' &&
+			    !(line[i] == '\r' && i == len - 1)) {
+				rc_seterr(err, "header line %zu contains the control "
+				    "character \\x%02x", lineno, (unsigned char)line[i]);
+				goto fail;
+			}
+		if (strncmp(line, END, strlen(END)) == 0 &&
+		    strspn(line + strlen(END), " \t\r") == len - strlen(END)) {
+			done = 1;
+			continue;
+		}
+		if (split(line, &key, &val) != 0) {
+			rc_seterr(err, "header line %zu is not 'key = value': '%s'",
+			    lineno, rc_io_quote(q, sizeof(q), line, len));
+			goto fail;
+		}
+		if (strcmp(key, "history") == 0) {
+			char **h = realloc(hist, (nhist + 1) * sizeof(*h));
+
+			if (h == NULL || (h[nhist] = strdup(val)) == NULL) {
+				if (h != NULL)
+					hist = h;
+				rc_seterr(err, "out of memory");
+				goto fail;
+			}
+			hist = h;
+			nhist++;
+			continue;
+		}
+		if (strncmp(key, "meta.", 5) == 0) {
+			char **mk, **mv;
+
+			if (key[5] == '\0') {
+				rc_seterr(err, "header line %zu: empty metadata key", lineno);
+				goto fail;
+			}
+			for (size_t i = 0; i < nmeta; i++)
+				if (strcmp(mkey[i], key + 5) == 0) {
+					rc_seterr(err, "header line %zu: duplicate key '%s'",
+					    lineno, key);
+					goto fail;
+				}
+			mk = realloc(mkey, (nmeta + 1) * sizeof(*mk));
+			if (mk != NULL)
+				mkey = mk;
+			mv = realloc(mval, (nmeta + 1) * sizeof(*mv));
+			if (mv != NULL)
+				mval = mv;
+			if (mk == NULL || mv == NULL) {
+				rc_seterr(err, "out of memory");
+				goto fail;
+			}
+			mkey[nmeta] = strdup(key + 5);
+			mval[nmeta] = strdup(val);
+			nmeta++;
+			if (mkey[nmeta - 1] == NULL || mval[nmeta - 1] == NULL) {
+				rc_seterr(err, "out of memory");
+				goto fail;
+			}
+			continue;
+		}
+		for (r = 0; r < K_N; r++)
+			if (strcmp(key, keys[r]) == 0)
+				break;
+		if (r == K_N) {
+			rc_seterr(err, "header line %zu: unknown key '%s' "
+			    "(metadata keys start with 'meta.')", lineno,
+			    rc_io_quote(q, sizeof(q), key, strlen(key)));
+			goto fail;
+		}
+		if (vals[r] != NULL) {
+			rc_seterr(err, "header line %zu: duplicate key '%s'", lineno, key);
+			goto fail;
+		}
+		if ((vals[r] = strdup(val)) == NULL) {
+			rc_seterr(err, "out of memory");
+			goto fail;
+		}
+	}
+	for (r = 0; r < K_N; r++)
+		if (vals[r] == NULL && r != K_UNIT && r != K_OFFSET) {
+			rc_seterr(err, "header lacks the required key '%s'", keys[r]);
+			goto fail;
+		}
+	if (rc_parse_size(vals[K_NX], &nx) != 0 || rc_parse_size(vals[K_NY], &ny) != 0) {
+		rc_seterr(err, "nx = '%s', ny = '%s': sizes must be positive integers",
+		    rc_io_quote(q, 32, vals[K_NX], strlen(vals[K_NX])),
+		    rc_io_quote(q + 32, 32, vals[K_NY], strlen(vals[K_NY])));
+		goto fail;
+	}
+	if (rc_parse_double(vals[K_LX], &lx) != 0 || rc_parse_double(vals[K_LY], &ly) != 0) {
+		rc_seterr(err, "lx = '%s', ly = '%s': lengths must be numbers",
+		    rc_io_quote(q, 32, vals[K_LX], strlen(vals[K_LX])),
+		    rc_io_quote(q + 32, 32, vals[K_LY], strlen(vals[K_LY])));
+		goto fail;
+	}
+	if ((kind = rc_kind_parse(vals[K_KIND])) < 0) {
+		rc_seterr(err, "unknown kind '%s'", rc_io_quote(q, sizeof(q),
+		    vals[K_KIND], strlen(vals[K_KIND])));
+		goto fail;
+	}
+	if (strcmp(vals[K_ENC], "float64-le") != 0) {
+		rc_seterr(err, "encoding '%s' not supported (only float64-le)",
+		    rc_io_quote(q, sizeof(q), vals[K_ENC], strlen(vals[K_ENC])));
+		goto fail;
+	}
+	if (vals[K_UNIT] != NULL && strlen(vals[K_UNIT]) >= sizeof(g->unit)) {
+		rc_seterr(err, "unit '%s' longer than %zu characters", rc_io_quote(q,
+		    sizeof(q), vals[K_UNIT], strlen(vals[K_UNIT])), sizeof(g->unit) - 1);
+		goto fail;
+	}
+	if (vals[K_OFFSET] != NULL && (rc_parse_size(vals[K_OFFSET], &offset) != 0 ||
+	    offset != in->consumed)) {
+		rc_seterr(err, "data_offset = %s, but the header ends at byte %llu",
+		    rc_io_quote(q, sizeof(q), vals[K_OFFSET], strlen(vals[K_OFFSET])),
+		    (unsigned long long)in->consumed);
+		goto fail;
+	}
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		goto fail;
+	if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
+		goto fail;
+	g->kind = (enum rc_kind)kind;
+	if (vals[K_UNIT] != NULL)
+		strcpy(g->unit, vals[K_UNIT]);
+	for (size_t i = 0; i < nmeta; i++)
+		if (rc_grid_meta_set(g, mkey[i], mval[i], err) != 0)
+			goto fail;
+	for (size_t i = 0; i < nhist; i++)
+		if (rc_grid_history_add(g, hist[i], err) != 0)
+			goto fail;
+	goto out;
+fail:
+	rc_grid_free(g);
+	g = NULL;
+out:
+	for (r = 0; r < K_N; r++)
+		free(vals[r]);
+	for (size_t i = 0; i < nhist; i++)
+		free(hist[i]);
+	for (size_t i = 0; i < nmeta; i++) {
+		free(mkey[i]);
+		free(mval[i]);
+	}
+	free(hist);
+	free(mkey);
+	free(mval);
+	free(line);
+	return g;
+}

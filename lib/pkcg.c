@@ -1,0 +1,235 @@
+/* pkcg.c - Polonsky & Keer's constrained conjugate gradient (Wear 231,
+ * 1999, 206-219) for the pressure sigma >= 0 of mean p.
+ *
+ * The surface height of the elastic body under sigma is u = G sigma + c,
+ * G_q = 1/k_q, c the rigid-body level.  On the contact set I_c = {sigma > 0}
+ * the gap g = u - h must vanish; c is the level that makes the mean gap
+ * over I_c zero.  Each iteration: conjugate direction t = g + delta
+ * (G/G_old) t_old on I_c (zero elsewhere; G = sum over I_c of g^2, delta = 0
+ * after points re-entered), r = G t (the one FFT pair), step
+ * tau = sum g t / sum (r - <r>_c) t, sigma -= tau t on I_c, negative
+ * pressures set to zero, points off contact with negative gap re-enter with
+ * sigma = -tau g, then the load is restored by rescaling sigma.
+ *
+ * G sigma is kept up to date by linearity (G sigma -= tau r; the rescaling
+ * scales it); only after an iteration that clipped or re-entered points,
+ * and every REFRESH_EVERY iterations against round-off, it is recomputed
+ * with a second FFT pair.  Near convergence the contact set is fixed and an
+ * iteration costs one pair.
+ *
+ * Convergence (solver.c): the residual of the pair (u', sigma), u' = h on
+ * I_c and max(G sigma + c, h) off it.  Since p + K u' - sigma = K(u' - u)
+ * and |K x| <= k_max |x| (Parseval), k_max rms(u' - u) / p bounds it from
+ * above at no cost; when the bound falls below the tolerance, or at the
+ * end, the residual itself is computed (one FFT pair) and decides.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+#include <string.h>
+
+#define REFRESH_EVERY	50
+#define PROGRESS_EVERY	50
+
+int
+rc__cg_alloc(rc_solver *s, rc_err *err)
+{
+	s->u = fftw_alloc_real(s->n);
+	s->cg_dir = fftw_alloc_real(s->n);
+	if (s->u == NULL || s->cg_dir == NULL)
+		return rc_seterr(err, "out of memory (asked for %zu bytes of CG buffers)",
+		    2 * s->n * sizeof(double));
+	return 0;
+}
+
+/* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */
+static size_t
+level(const rc_solver *s, double *c)
+{
+	size_t k, on = 0;
+	double sum = 0;
+	const double *sigma = s->sigma, *disp = s->u, *h = s->height;
+
+#pragma omp parallel for reduction(+:sum, on) schedule(static)
+	for (k = 0; k < s->n; k++)
+		if (sigma[k] > 0) {
+			sum += h[k] - disp[k];
+			on++;
+		}
+	*c = on ? sum / (double)on : 0;
+	return on;
+}
+
+/* Residual of (u', sigma); leaves u' in s->u, the contact set and the
+ * elastic energy.  s->u holds G sigma on entry. */
+static double
+final_check(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
+	double *u = s->u, *ku = s->el.fft.real;
+	const double *h = s->height, *sigma = s->sigma;
+
+	level(s, &c);
+#pragma omp parallel for schedule(static)
+	for (k = 0; k < n; k++) {
+		double v = u[k] + c;
+
+		s->contact[k] = sigma[k] > 0;
+		u[k] = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
+	}
+	rc_elastic_force(&s->el, u, ku);
+#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
+	for (k = 0; k < n; k++) {
+		double d = p + ku[k] - sigma[k];
+
+		sum_d2 += d * d;
+		sum_s += sigma[k];
+		sum_e += ku[k] * u[k];
+	}
+	s->energy = 0.5 * sum_e / (double)n;
+	force = sqrt(sum_d2 / (double)n) / p;
+	load = fabs(sum_s / (double)n - p) / p;
+	return force > load ? force : load;
+}
+
+/* Initial pressure: the previous solution rescaled, the pressure a loaded
+ * displacement implies, or uniform. */
+static void
+initial_pressure(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double sum = 0, *sigma = s->sigma;
+
+	if (!s->have_sigma && s->have_u) {
+		double *ku = s->el.fft.real;
+
+		rc_elastic_force(&s->el, s->u, ku);
+		for (k = 0; k < n; k++) {
+			double v = p + ku[k];
+
+			sigma[k] = s->u[k] <= s->height[k] && v > 0 ? v : 0;
+		}
+	}
+	if (s->have_sigma || s->have_u)
+		for (k = 0; k < n; k++)
+			sum += sigma[k];
+	if (!(sum > 0)) {
+		for (k = 0; k < n; k++)
+			sigma[k] = p;
+		sum = p * (double)n;
+	}
+	for (k = 0; k < n; k++)
+		sigma[k] *= p * (double)n / sum;
+	s->have_sigma = 1;
+}
+
+int
+rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
+{
+	rc_elastic *e = &s->el;
+	size_t n = s->n, k, n_contact = 0;
+	double *sigma = s->sigma, *disp = s->u, *t = s->cg_dir;
+	double *r = e->fft.real;
+	const double *h = s->height;
+	double g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
+	double pn = p * (double)n, inv_n = 1.0 / (double)n;
+	long it, since_refresh = 0;
+	int stale = 1, conjugate = 0, status = 1;
+
+	(void)err;
+	initial_pressure(s, p);
+	memset(t, 0, n * sizeof(double));
+	for (it = 0; ; it++) {
+		double gsum = 0, pen = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
+		double sum_t = 0, sum_s = 0, tau, beta, rbar, f;
+		size_t reentered = 0, clipped = 0;
+
+		if (stale || since_refresh >= REFRESH_EVERY) {
+			rc_elastic_displacement(e, sigma, disp);
+			stale = 0;
+			since_refresh = 0;
+		}
+		since_refresh++;
+		n_contact = level(s, &c);
+		if (n_contact == 0) {
+			/* Cannot happen with sum sigma = p N > 0; guard anyway. */
+			break;
+		}
+#pragma omp parallel for reduction(+:gsum, pen) schedule(static)
+		for (k = 0; k < n; k++) {
+			double g = disp[k] + c - h[k];
+
+			if (sigma[k] > 0)
+				gsum += g * g;
+			else if (g < 0)
+				pen += g * g;
+		}
+		bound = e->k_max * sqrt((gsum + pen) * inv_n) / p;
+		if (bound <= s->opts.tol || it >= s->opts.max_iter ||
+		    (s->opts.stop && *s->opts.stop)) {
+			residual = final_check(s, p);
+			if (residual <= s->opts.tol)
+				status = 0;
+			break;
+		}
+		if (s->opts.progress && it % PROGRESS_EVERY == 0)
+			s->opts.progress(s->opts.progress_ctx, it, bound,
+			    (double)n_contact * inv_n);
+
+		beta = conjugate ? gsum / g_old : 0;
+		g_old = gsum;
+#pragma omp parallel for reduction(+:sum_gt, sum_t) schedule(static)
+		for (k = 0; k < n; k++) {
+			if (sigma[k] > 0) {
+				double g = disp[k] + c - h[k];
+
+				t[k] = g + beta * t[k];
+				sum_gt += g * t[k];
+				sum_t += t[k];
+			} else
+				t[k] = 0;
+		}
+		rc_elastic_displacement(e, t, r);
+#pragma omp parallel for reduction(+:sum_rt, sum_r) schedule(static)
+		for (k = 0; k < n; k++)
+			if (sigma[k] > 0) {
+				sum_rt += r[k] * t[k];
+				sum_r += r[k];
+			}
+		rbar = sum_r / (double)n_contact;
+		if (!(sum_rt - rbar * sum_t > 0))
+			tau = 0;
+		else
+			tau = sum_gt / (sum_rt - rbar * sum_t);
+#pragma omp parallel for reduction(+:sum_s, reentered, clipped) schedule(static)
+		for (k = 0; k < n; k++) {
+			double g = disp[k] + c - h[k];
+
+			if (sigma[k] > 0) {
+				sigma[k] -= tau * t[k];
+				if (sigma[k] < 0) {
+					sigma[k] = 0;
+					clipped++;
+				}
+			} else if (g < 0) {
+				sigma[k] = -tau * g;
+				reentered++;
+			}
+			disp[k] -= tau * r[k];
+			sum_s += sigma[k];
+		}
+		conjugate = reentered == 0;
+		if (reentered || clipped)
+			stale = 1;
+		f = pn / sum_s;
+#pragma omp parallel for schedule(static)
+		for (k = 0; k < n; k++) {
+			sigma[k] *= f;
+			disp[k] *= f;
+		}
+	}
+	res->iterations = it;
+	res->residual = residual;
+	return status;
+}

@@ -1,0 +1,261 @@
+/* solver.c - options, dispatch, state and accessors of the contact solvers.
+ *
+ * Convergence (one measure for both methods).  A method stops when the
+ * residual of its current admissible pair
+ *   u >= h  (elastic surface height, no penetration),
+ *   sigma >= 0, sigma = 0 off the contact set  (no tension),
+ * falls to opts.tol, where
+ *   residual = max( rms_r[p + (K u)(r) - sigma(r)] / p,  |<sigma> - p| / p ).
+ * The first term is the equilibrium of every point (the elastic pressure
+ * that u needs, p + K u, must be supplied by the wall where in contact and
+ * vanish elsewhere), measured in units of the applied pressure; the second
+ * is load balance.  Both are scale-free (invariant under r -> s r, h -> t h
+ * with p and E* scaled to keep p* fixed).  FIRE keeps u admissible and
+ * takes sigma = max(p + K u, 0) on u = h; CG keeps sigma admissible and
+ * takes u = h on its contact set, max(G sigma + c, h) elsewhere.
+ *
+ * Default tolerance: measured on a 256^2 self-affine surface (H = 0.8,
+ * lambda_r = L/2, lambda_s = L/64, p* = 0.05, gbar = 1, a_r ~ 0.04) against
+ * a solve to tol 1e-13, |a_r - a_r_ref| / a_r_ref was (see
+ * tests/test_solver.c and bench/bench_gfmd.c):
+ *   tol      FIRE       CG
+ *   1e-4     3e-3       8e-4
+ *   1e-5     2e-4       0
+ *   1e-6     0          0
+ * (0: not a single contact point differs out of ~2700).  The default 1e-6
+ * converges a_r to better than 1e-6 relative for both methods.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+void
+rc_solver_defaults(rc_solver_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->method = RC_METHOD_FIRE;
+	o->modulus = 1;
+	o->tol = 1e-6;
+	o->max_iter = 100000;
+	o->measure = 0;
+}
+
+const char *
+rc_method_name(enum rc_method m)
+{
+	switch (m) {
+	case RC_METHOD_FIRE:
+		return "fire";
+	case RC_METHOD_CG:
+		return "cg";
+	}
+	return "unknown";
+}
+
+int
+rc_method_parse(const char *name)
+{
+	if (strcmp(name, "fire") == 0)
+		return RC_METHOD_FIRE;
+	if (strcmp(name, "cg") == 0)
+		return RC_METHOD_CG;
+	return -1;
+}
+
+double
+rc__seconds(void)
+{
+	struct timespec t;
+
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+rc_solver *
+rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
+{
+	rc_solver *s;
+	size_t n, bad;
+
+	if (o->method != RC_METHOD_FIRE && o->method != RC_METHOD_CG) {
+		rc_seterr(err, "unknown solver method %d", (int)o->method);
+		return NULL;
+	}
+	if (!(o->tol > 0) || !isfinite(o->tol)) {
+		rc_seterr(err, "tolerance must be positive and finite");
+		return NULL;
+	}
+	if (o->max_iter < 1) {
+		rc_seterr(err, "max_iter must be at least 1");
+		return NULL;
+	}
+	if (rc_grid_check_shape(ind->nx, ind->ny, ind->lx, ind->ly, err) != 0)
+		return NULL;
+	if (!rc_grid_all_finite(ind, &bad)) {
+		rc_seterr(err, "indenter height %zu is not finite", bad);
+		return NULL;
+	}
+	if ((s = rc_calloc(1, sizeof(*s), err)) == NULL)
+		return NULL;
+	s->opts = *o;
+	s->nx = ind->nx;
+	s->ny = ind->ny;
+	s->n = n = ind->nx * ind->ny;
+	s->lx = ind->lx;
+	s->ly = ind->ly;
+	if (rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
+	    o->measure ? RC_FFT_MEASURE : RC_FFT_ESTIMATE, err) != 0) {
+		free(s);
+		return NULL;
+	}
+	s->height = fftw_alloc_real(n);
+	s->sigma = fftw_alloc_real(n);
+	s->contact = calloc(n, 1);
+	if (s->height == NULL || s->sigma == NULL || s->contact == NULL) {
+		rc_seterr(err, "out of memory (asked for %zu bytes of solver fields)",
+		    n * (2 * sizeof(double) + 1));
+		rc_solver_free(s);
+		return NULL;
+	}
+	memcpy(s->height, ind->z, n * sizeof(double));
+	memset(s->sigma, 0, n * sizeof(double));
+	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
+	    rc__cg_alloc(s, err)) != 0) {
+		rc_solver_free(s);
+		return NULL;
+	}
+	return s;
+}
+
+void
+rc_solver_free(rc_solver *s)
+{
+	if (s == NULL)
+		return;
+	if (s->u != s->el.fft.real)
+		fftw_free(s->u);
+	rc_elastic_free(&s->el);
+	fftw_free(s->height);
+	fftw_free(s->sigma);
+	free(s->contact);
+	fftw_free(s->fire_vel);
+	fftw_free(s->fire_aux);
+	fftw_free(s->cg_dir);
+	free(s);
+}
+
+int
+rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err)
+{
+	size_t k;
+
+	for (k = 0; k < s->n; k++)
+		if (!isfinite(u[k]))
+			return rc_seterr(err, "initial displacement %zu is not finite", k);
+	memcpy(s->u, u, s->n * sizeof(double));
+	s->have_u = 1;
+	s->have_sigma = 0;
+	return 0;
+}
+
+int
+rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
+{
+	double t0 = rc__seconds();
+	int r;
+
+	memset(res, 0, sizeof(*res));
+	if (!(p > 0) || !isfinite(p))
+		return rc_seterr(err, "pressure must be positive and finite");
+	if (s->opts.method == RC_METHOD_FIRE)
+		r = rc__fire_solve(s, p, res, err);
+	else
+		r = rc__cg_solve(s, p, res, err);
+	if (r < 0)
+		return -1;
+	s->last_pressure = p;
+	res->seconds = rc__seconds() - t0;
+	res->converged = r == 0;
+	return r;
+}
+
+double
+rc__residual(const rc_solver *s, double p, const double *sigma,
+    const double *sigma_implied)
+{
+	size_t k, n = s->n;
+	double sum_f2 = 0, sum_s = 0, force, load;
+
+#pragma omp parallel for reduction(+:sum_f2, sum_s) schedule(static)
+	for (k = 0; k < n; k++) {
+		double d = sigma_implied[k] - sigma[k];
+
+		sum_f2 += d * d;
+		sum_s += sigma[k];
+	}
+	force = sqrt(sum_f2 / (double)n) / p;
+	load = fabs(sum_s / (double)n - p) / p;
+	return force > load ? force : load;
+}
+
+const double *
+rc_solver_displacement(const rc_solver *s)
+{
+	return s->u;
+}
+
+const double *
+rc_solver_pressure(const rc_solver *s)
+{
+	return s->sigma;
+}
+
+/* The contact set.  FIRE: points with u = h after the projection onto
+ * u >= h (bit-exact equality, the projection writes h) where the elastic
+ * pressure p + K u is positive.  CG: points with sigma > 0 (its iterate is
+ * zero exactly off contact).  At convergence these agree up to points whose
+ * pressure is within the tolerance of zero, on the edge of the contact. */
+const unsigned char *
+rc_solver_contact(const rc_solver *s)
+{
+	return s->contact;
+}
+
+double
+rc_solver_elastic_energy(const rc_solver *s)
+{
+	return s->energy;
+}
+
+double
+rc_solver_mean_gap(const rc_solver *s)
+{
+	size_t k;
+	double sum = 0;
+
+#pragma omp parallel for reduction(+:sum) schedule(static)
+	for (k = 0; k < s->n; k++)
+		sum += s->u[k] - s->height[k];
+	return sum / (double)s->n;
+}
+
+size_t
+rc_solver_bytes(const rc_solver *s)
+{
+	size_t b = sizeof(*s) + rc_elastic_bytes(&s->el);
+	size_t nc = s->el.nxc * s->ny;
+
+	b += s->n * (2 * sizeof(double) + 1);	/* height, sigma, contact */
+	if (s->u != s->el.fft.real)
+		b += s->n * sizeof(double);
+	if (s->fire_vel)
+		b += nc * sizeof(fftw_complex);
+	if (s->fire_aux)
+		b += nc * sizeof(fftw_complex);
+	if (s->cg_dir)
+		b += s->n * sizeof(double);
+	return b;
+}

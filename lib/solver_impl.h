@@ -1,0 +1,40 @@
+/* solver_impl.h - the state behind rc_solver, shared by solver.c (options,
+ * dispatch, accessors, convergence measure) and the two methods (fire.c,
+ * pkcg.c).  Private to the library. */
+#ifndef RC_SOLVER_IMPL_H
+#define RC_SOLVER_IMPL_H
+
+#include "elastic.h"
+#include "solver.h"
+
+struct rc_solver {
+	rc_solver_opts opts;
+	size_t nx, ny, n;
+	double lx, ly;
+	rc_elastic el;
+	double *height;		/* indenter h, n */
+	double *u;		/* elastic surface height; FIRE: el.fft.real */
+	double *sigma;		/* contact pressure, n */
+	unsigned char *contact;	/* n */
+	/* FIRE: velocity (later the previous positions) in half-complex
+	 * storage, and a spectrum for K u at convergence checks. */
+	fftw_complex *fire_vel, *fire_aux;
+	/* CG: the conjugate direction. */
+	double *cg_dir;
+	int have_u;		/* u holds a state to start from */
+	int have_sigma;		/* CG: sigma holds a pressure to start from */
+	double last_pressure;	/* pressure of the last solve (0: none) */
+	double energy;		/* elastic energy per area of the solution */
+};
+
+/* Both methods' convergence measure for an admissible pair: u >= h,
+ * sigma >= 0 and zero off contact, sigma_implied = p + K u (see solver.c). */
+double rc__residual(const rc_solver *s, double p, const double *sigma,
+    const double *sigma_implied);
+double rc__seconds(void);
+int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
+int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
+int rc__fire_alloc(rc_solver *s, rc_err *err);
+int rc__cg_alloc(rc_solver *s, rc_err *err);
+
+#endif

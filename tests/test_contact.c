@@ -1,0 +1,353 @@
+/* test_contact.c - contact analysis: counts, contact line, periodic
+ * patches, A_c, Yastrebov's estimate, gradients over the contact, kappa. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "contact.h"
+#include "grid.h"
+#include "kappa.h"
+#include "spectral.h"
+#include "testlib.h"
+
+/* Mask from a picture: rows top to bottom are j = 0, 1, ...; 'X' is contact. */
+static unsigned char *
+mask_from(const char *const *rows, size_t nx, size_t ny)
+{
+	unsigned char *m = calloc(nx * ny, 1);
+
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++)
+			m[j * nx + i] = rows[j][i] == 'X';
+	return m;
+}
+
+static void
+check_mask(const char *name, const unsigned char *m, size_t nx, size_t ny,
+    size_t n_c, size_t n_cl, size_t n_patches, double sum_sq)
+{
+	size_t np;
+	double sq;
+	rc_err err;
+
+	test_int((long long)rc_contact_count(m, nx * ny), (long long)n_c, "%s: n_c", name);
+	test_int((long long)rc_contact_line(m, nx, ny), (long long)n_cl, "%s: n_cl", name);
+	test_true(rc_contact_patches(m, nx, ny, &np, &sq, &err) == 0, "%s: patches run", name);
+	test_int((long long)np, (long long)n_patches, "%s: n_patches", name);
+	test_abs(sq, sum_sq, 0, "%s: sum of squared patch sizes", name);
+}
+
+static void
+test_hand_made(void)
+{
+	static const char *const single[] = {
+		"........", "........", "...X....", "........", "........", "........" };
+	static const char *const block3[] = {
+		"........", ".XXX....", ".XXX....", ".XXX....", "......X.", "........" };
+	/* The four corners touch across both boundaries: one patch. */
+	static const char *const corners[] = {
+		"X......X", "........", "........", "........", "........", "X......X" };
+	/* A band crossing the x boundary and a column crossing the y one. */
+	static const char *const wrap[] = {
+		"....X...", "XX..X.XX", "....X...", "........", "....X...", "....X..." };
+	/* A U whose arms are labelled apart until the bottom row joins them. */
+	static const char *const u_shape[] = {
+		"X.X..", "X.X..", "X.X..", "XXX..", "....." };
+	/* Checkerboard on an odd width: (4, j) and (0, j) touch across x. */
+	static const char *const checker5[] = {
+		"X.X.X", ".X.X.", "X.X.X", ".X.X." };
+	static const char *const full[] = { "XXX", "XXX" };
+	static const char *const empty[] = { "...", "..." };
+	unsigned char *m;
+
+	m = mask_from(single, 8, 6);
+	check_mask("single point", m, 8, 6, 1, 1, 1, 1);
+	free(m);
+	/* 3x3 block: only its centre has four contact neighbours. */
+	m = mask_from(block3, 8, 6);
+	check_mask("3x3 block + point", m, 8, 6, 10, 9, 2, 81 + 1);
+	free(m);
+	m = mask_from(corners, 8, 6);
+	check_mask("corners across both boundaries", m, 8, 6, 4, 4, 1, 16);
+	free(m);
+	m = mask_from(wrap, 8, 6);
+	/* The band's runs {0,1} and {6,7} join across x (4 points); column 4
+	 * (rows 0-2 and 4-5) joins across y (5 points), not touching the band
+	 * since columns 3 and 5 of row 1 are empty. */
+	check_mask("wrap-around band and column", m, 8, 6, 9, 9, 2, 25 + 16);
+	free(m);
+	/* Every point of the U borders an empty column, row 4, or wraps to one. */
+	m = mask_from(u_shape, 5, 5);
+	check_mask("U shape merged late", m, 5, 5, 9, 9, 1, 81);
+	free(m);
+	/* Rows 0 and 2: {0,4} (joined across x) and {2}; rows 1 and 3: {1},{3}.
+	 * Sizes 2,1,1,1,2,1,1,1. */
+	m = mask_from(checker5, 5, 4);
+	check_mask("odd checkerboard", m, 5, 4, 10, 10, 8, 14);
+	free(m);
+	/* Even checkerboard: every point isolated. */
+	m = calloc(64, 1);
+	for (size_t j = 0; j < 8; j++)
+		for (size_t i = 0; i < 8; i++)
+			m[j * 8 + i] = (i + j) % 2 == 0;
+	check_mask("even checkerboard", m, 8, 8, 32, 32, 32, 32);
+	free(m);
+	m = mask_from(full, 3, 2);
+	check_mask("full contact", m, 3, 2, 6, 0, 1, 36);
+	free(m);
+	m = mask_from(empty, 3, 2);
+	check_mask("no contact", m, 3, 2, 0, 0, 0, 0);
+	free(m);
+	/* Line grid nx x 1: only the two x neighbours; 1 1 0 1 is one patch
+	 * across the boundary, points 1 and 3 border the gap. */
+	{
+		unsigned char line[4] = { 1, 1, 0, 1 };
+		check_mask("line 1101", line, 4, 1, 3, 2, 1, 9);
+		unsigned char col[4] = { 1, 0, 1, 0 };
+		check_mask("column 1 x 4 1010", col, 1, 4, 2, 2, 2, 2);
+		unsigned char one[1] = { 1 };
+		check_mask("1 x 1 grid", one, 1, 1, 1, 0, 1, 1);
+	}
+}
+
+/* Independent reference: flood fill with an explicit stack over points,
+ * and the contact line by brute force. */
+static void
+reference(const unsigned char *m, size_t nx, size_t ny, size_t *n_cl,
+    size_t *n_patches, double *sum_sq)
+{
+	size_t n = nx * ny, *stack = malloc(n * sizeof(*stack));
+	unsigned char *seen = calloc(n, 1);
+
+	*n_cl = *n_patches = 0;
+	*sum_sq = 0;
+	for (size_t p = 0; p < n; p++) {
+		size_t i = p % nx, j = p / nx;
+		size_t nb[4] = { j * nx + (i + 1) % nx, j * nx + (i + nx - 1) % nx,
+		    ((j + 1) % ny) * nx + i, ((j + ny - 1) % ny) * nx + i };
+		if (m[p] && (!m[nb[0]] || !m[nb[1]] || !m[nb[2]] || !m[nb[3]]))
+			(*n_cl)++;
+		if (!m[p] || seen[p])
+			continue;
+		size_t top = 0, size = 0;
+		stack[top++] = p;
+		seen[p] = 1;
+		while (top) {
+			size_t q = stack[--top], qi = q % nx, qj = q / nx;
+			size_t qn[4] = { qj * nx + (qi + 1) % nx, qj * nx + (qi + nx - 1) % nx,
+			    ((qj + 1) % ny) * nx + qi, ((qj + ny - 1) % ny) * nx + qi };
+			size++;
+			for (int k = 0; k < 4; k++)
+				if (m[qn[k]] && !seen[qn[k]]) {
+					seen[qn[k]] = 1;
+					stack[top++] = qn[k];
+				}
+		}
+		(*n_patches)++;
+		*sum_sq += (double)size * (double)size;
+	}
+	free(stack);
+	free(seen);
+}
+
+static void
+test_random_masks(void)
+{
+	static const size_t shapes[][2] = {
+		{ 17, 13 }, { 64, 64 }, { 1, 31 }, { 31, 1 }, { 2, 2 }, { 3, 50 }, { 97, 5 } };
+	static const double density[] = { 0.1, 0.4, 0.5, 0.6, 0.9 };
+	unsigned long long state = 12345;
+
+	for (size_t s = 0; s < sizeof(shapes) / sizeof(shapes[0]); s++) {
+		size_t nx = shapes[s][0], ny = shapes[s][1], n = nx * ny;
+		unsigned char *m = malloc(n);
+		for (size_t d = 0; d < sizeof(density) / sizeof(density[0]); d++) {
+			size_t n_cl, np, rnp;
+			double sq, rsq;
+			rc_err err;
+			for (size_t p = 0; p < n; p++) {
+				state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+				m[p] = (double)(state >> 11) / 9007199254740992.0 < density[d];
+			}
+			reference(m, nx, ny, &n_cl, &rnp, &rsq);
+			test_int((long long)rc_contact_line(m, nx, ny), (long long)n_cl,
+			    "random %zux%zu density %g: n_cl vs brute force", nx, ny, density[d]);
+			rc_contact_patches(m, nx, ny, &np, &sq, &err);
+			test_int((long long)np, (long long)rnp,
+			    "random %zux%zu density %g: patches vs flood fill", nx, ny, density[d]);
+			test_abs(sq, rsq, 0,
+			    "random %zux%zu density %g: sum s^2 vs flood fill", nx, ny, density[d]);
+		}
+		free(m);
+	}
+}
+
+/* A_c in area units and Yastrebov's estimate through rc_contact_analyse. */
+static void
+test_analyse(void)
+{
+	static const char *const block3[] = {
+		"........", ".XXX....", ".XXX....", ".XXX....", "......X.", "........" };
+	rc_contact_opts o;
+	rc_contact_stats st;
+	rc_err err;
+	rc_grid *h = rc_grid_new(8, 6, 2.0, 3.0, &err);
+	unsigned char *m = mask_from(block3, 8, 6);
+	double cell = (2.0 / 8) * (3.0 / 6);
+
+	rc_contact_defaults(&o);
+	o.flags = RC_CONTACT_COUNT | RC_CONTACT_LINE | RC_CONTACT_PATCHES;
+	test_true(rc_contact_analyse(h, m, &o, &st, &err) == 0, "analyse runs");
+	test_rel(st.a_r, 10.0 / 48, 1e-15, "a_r = n_c/n_tot");
+	/* Patches of 9 and 1 points: A_c = (81 + 1)/10 points. */
+	test_rel(st.patch_size_char, 8.2 * cell, 1e-15, "A_c = sum s^2/sum s in area units");
+	test_rel(RC_YASTREBOV_ALPHA, (M_PI - 1 + M_LN2) / 24, 1e-15,
+	    "alpha = (pi - 1 + ln 2)/24");
+	test_rel(RC_YASTREBOV_ALPHA, 0.11811, 5e-5, "alpha as printed, 0.11811");
+	test_rel(st.a_yastrebov, (10 - RC_YASTREBOV_ALPHA * 9) / 48, 1e-15,
+	    "Yastrebov Eq. 22 with the default alpha");
+	o.alpha = 0.25;
+	rc_contact_analyse(h, m, &o, &st, &err);
+	test_rel(st.a_yastrebov, (10 - 0.25 * 9) / 48, 1e-15, "Yastrebov with alpha 0.25");
+	test_true(isnan(st.gbar_c) && isnan(st.kappa), "gradients not computed unless asked");
+	o.flags = RC_CONTACT_COUNT;
+	rc_contact_analyse(h, m, &o, &st, &err);
+	test_true(st.n_cl == 0 && st.n_patches == 0 && isnan(st.a_yastrebov),
+	    "only the count when only the count is asked");
+	memset(m, 0, 48);
+	o.flags = RC_CONTACT_ALL;
+	rc_contact_analyse(h, m, &o, &st, &err);
+	test_true(st.n_c == 0 && isnan(st.gbar_c) && isnan(st.patch_size_char),
+	    "no contact: averages are NaN");
+	free(m);
+	rc_grid_free(h);
+}
+
+/* h = A cos(k x) with k = 2 pi m / lx, contact where cos(k x) > 0.  With
+ * points per period N = 4M + 2 the mask covers exactly (-lambda/4,
+ * lambda/4) in the midpoint sense, so the discrete averages approach the
+ * integrals with the midpoint rule's O((dx/lambda)^2) error:
+ *   gbar_c^2 = A^2 k^2 / 2,  gbar_c'^2 = A^2 k^2 (1/2 - 4/pi^2).
+ * The discrete averages are also checked exactly against the analytic
+ * derivatives summed at the mask points (spectral derivatives are exact
+ * for a band-limited cosine). */
+static void
+test_cosine(void)
+{
+	size_t periods = 2, per = 4 * 31 + 2, nx = periods * per, ny = 3;
+	double lx = 1.5, amp = 0.3, k = 2 * M_PI * (double)periods / lx;
+	double s_grad = 0, s_h = 0, s_lap = 0, n_c = 0;
+	rc_contact_opts o;
+	rc_contact_stats st;
+	rc_err err;
+	rc_grid *h = rc_grid_new(nx, ny, lx, 0.7, &err);
+	unsigned char *m = malloc(nx * ny);
+
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++) {
+			double x = lx * (double)i / (double)nx;
+			h->z[j * nx + i] = amp * cos(k * x);
+			m[j * nx + i] = cos(k * x) > 0;
+		}
+	for (size_t i = 0; i < nx; i++) {
+		double x = lx * (double)i / (double)nx;
+		if (!m[i])
+			continue;
+		n_c++;
+		s_grad += pow(amp * k * sin(k * x), 2);
+		s_h += amp * cos(k * x);
+	}
+	for (size_t i = 0; i < nx; i++) {
+		double x = lx * (double)i / (double)nx;
+		if (m[i])
+			s_lap += (amp * cos(k * x) - s_h / n_c) * amp * k * k * cos(k * x);
+	}
+	rc_contact_defaults(&o);
+	o.flags = RC_CONTACT_GRADIENT;
+	test_true(rc_contact_analyse(h, m, &o, &st, &err) == 0, "cosine analyse");
+	test_rel(st.gbar_c, sqrt(s_grad / n_c), 1e-12, "cosine gbar_c vs pointwise sum");
+	test_rel(st.gbar_c_prime, sqrt(s_lap / n_c), 1e-12,
+	    "cosine gbar_c' vs pointwise sum");
+	/* Midpoint rule on N = 126 points per period: relative error of the
+	 * averages O((1/N)^2) = O(6e-5) times a constant of a few; observed:
+	 * gbar_c exact (the sin^2 sum is), gbar_c' 4.4e-4. */
+	test_rel(st.gbar_c, amp * k / sqrt(2), 1e-3, "cosine gbar_c vs integral");
+	test_rel(st.gbar_c_prime, amp * k * sqrt(0.5 - 4 / (M_PI * M_PI)), 1e-3,
+	    "cosine gbar_c' vs integral");
+	/* Central differences on a cosine are the exact derivatives times
+	 * sin(k dx)/(k dx) (gradient) and (2 - 2 cos(k dx))/(k dx)^2
+	 * (Laplacian), at every point: exact identities. */
+	{
+		double kdx = k * lx / (double)nx;
+		double grad_factor = sin(kdx) / kdx;
+		double lap_factor = (2 - 2 * cos(kdx)) / (kdx * kdx);
+		o.fd = 1;
+		rc_contact_analyse(h, m, &o, &st, &err);
+		test_rel(st.gbar_c, grad_factor * sqrt(s_grad / n_c), 1e-12,
+		    "cosine gbar_c by central differences");
+		test_rel(st.gbar_c_prime, sqrt(lap_factor * s_lap / n_c), 1e-12,
+		    "cosine gbar_c' by the 5-point Laplacian");
+		test_rel(rc_contact_gbar_fd(h), grad_factor * amp * k / sqrt(2), 1e-12,
+		    "central-difference rms gradient of the whole cosine");
+	}
+	free(m);
+	rc_grid_free(h);
+}
+
+/* Full contact: gbar_c = rc_rms_gradient and, on an odd grid (no Nyquist
+ * mode, where the gradient and Laplacian differ), gbar_c' = gbar_c by
+ * summation by parts, exactly up to round-off.  Also kappa round trip. */
+static void
+test_full_contact(void)
+{
+	size_t nx = 15, ny = 9, n = nx * ny;
+	unsigned long long state = 99;
+	double gbar;
+	rc_contact_opts o;
+	rc_contact_stats st;
+	rc_err err;
+	rc_grid *h = rc_grid_new(nx, ny, 1.0, 0.6, &err);
+	unsigned char *m = malloc(n);
+	rc_fft fft;
+
+	for (size_t p = 0; p < n; p++) {
+		state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+		h->z[p] = (double)(state >> 11) / 9007199254740992.0 - 0.5;
+		m[p] = 1;
+	}
+	rc_fft_init(&fft, nx, ny, RC_FFT_ESTIMATE, &err);
+	rc_rms_gradient(h, &fft, &gbar, &err);
+	rc_contact_defaults(&o);
+	o.fft = &fft;
+	o.pressure = 0.01;
+	o.modulus = 2;
+	o.gbar = gbar;
+	rc_contact_analyse(h, m, &o, &st, &err);
+	test_rel(st.gbar_c, gbar, 1e-12, "full contact: gbar_c = gbar");
+	test_rel(st.gbar_c_prime, gbar, 1e-12, "full contact, odd grid: gbar_c' = gbar_c");
+	test_true(isinf(st.kappa), "full contact: kappa = inf");
+	/* Partial contact: erf(sqrt(pi) kappa p* / 2) gives a_r back. */
+	for (size_t p = 0; p < n; p++)
+		m[p] = h->z[p] > 0.2;
+	rc_contact_analyse(h, m, &o, &st, &err);
+	test_rel(erf(sqrt(M_PI) * st.kappa * o.pressure / (o.modulus * gbar) / 2), st.a_r,
+	    1e-12, "kappa inverts Eq. 24");
+	test_rel(erf(sqrt(M_PI) * st.kappa_c * o.pressure / (o.modulus * st.gbar_c) / 2),
+	    st.a_r, 1e-12, "kappa_c inverts Eq. 8");
+	test_range(st.gbar_c_prime, 0, 1e3, "gbar_c' finite on a random mask");
+	rc_fft_free(&fft);
+	free(m);
+	rc_grid_free(h);
+}
+
+int
+main(void)
+{
+	test_hand_made();
+	test_random_masks();
+	test_analyse();
+	test_cosine();
+	test_full_contact();
+	return test_summary();
+}

@@ -1,0 +1,314 @@
+/* test_png.c - PNG previews decoded back with libpng: size, aspect,
+ * colours of the extremes, mask and overlay colours, log scale,
+ * downsampling; the colormap's lightness. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include <libpng16/png.h>	/* lib/png.h shadows <png.h> */
+
+#include "colormap.h"
+#include "grid.h"
+#include "png.h"
+#include "testlib.h"
+
+struct image {
+	size_t width, height;
+	uint8_t *rgb;
+};
+
+static int
+decode(const char *path, struct image *im)
+{
+	png_image pi;
+
+	memset(&pi, 0, sizeof(pi));
+	pi.version = PNG_IMAGE_VERSION;
+	if (!png_image_begin_read_from_file(&pi, path))
+		return -1;
+	pi.format = PNG_FORMAT_RGB;
+	im->width = pi.width;
+	im->height = pi.height;
+	im->rgb = malloc(PNG_IMAGE_SIZE(pi));
+	if (!png_image_finish_read(&pi, NULL, im->rgb, 0, NULL)) {
+		free(im->rgb);
+		return -1;
+	}
+	return 0;
+}
+
+static int
+same(const uint8_t *px, const uint8_t c[3])
+{
+	return px[0] == c[0] && px[1] == c[1] && px[2] == c[2];
+}
+
+static const uint8_t *
+pixel(const struct image *im, size_t u, size_t v)
+{
+	return im->rgb + 3 * (v * im->width + u);
+}
+
+static char *
+tmppath(const char *name)
+{
+	static char buf[4][512];
+	static int k;
+
+	k = (k + 1) % 4;
+	snprintf(buf[k], sizeof(buf[k]), "%s/%s", test_tmpdir(), name);
+	return buf[k];
+}
+
+static int
+write_png(const rc_grid *g, const char *path, enum rc_png_style style,
+    size_t max_size, const rc_grid *overlay)
+{
+	rc_png_opts o;
+	rc_err err;
+
+	rc_png_defaults(&o);
+	o.style = style;
+	o.max_size = max_size;
+	o.overlay = overlay;
+	if (rc_png_write(g, path, &o, &err) != 0) {
+		fprintf(stderr, "rc_png_write: %s\n", err.msg);
+		return -1;
+	}
+	return 0;
+}
+
+/* Lightness must rise monotonically: sampled finely in double precision it
+ * is the designed ramp L* = 18 + 74 t (checked through the independent
+ * inverse conversion sRGB -> CIELAB); the 8-bit table may wobble by the
+ * rounding of its channels (< 0.5 in L*) but rises over every 4 entries. */
+static void
+test_colormap(void)
+{
+	double rgb[3], lab[3], prev = -1, worst = 0;
+	double l8[256];
+	int mono = 1, mono8 = 1, wobble = 1;
+
+	for (int k = 0; k <= 1000; k++) {
+		rc_colormap_srgb(k / 1000.0, rgb);
+		rc_srgb_to_lab(rgb, lab);
+		if (lab[0] <= prev)
+			mono = 0;
+		prev = lab[0];
+		worst = fmax(worst, fabs(lab[0] - (18 + 74 * k / 1000.0)));
+	}
+	test_true(mono, "colormap lightness strictly increasing");
+	/* Forward and inverse conversions agree to their coefficients'
+	 * precision (7 digits), far below 0.01 in L*. */
+	test_abs(worst, 0, 0.01, "colormap lightness is the linear ramp 18..92");
+	for (int k = 0; k < 256; k++) {
+		uint8_t c[3];
+		rc_colormap_rgb8(k / 255.0, c);
+		for (int i = 0; i < 3; i++)
+			rgb[i] = c[i] / 255.0;
+		rc_srgb_to_lab(rgb, lab);
+		l8[k] = lab[0];
+	}
+	for (int k = 1; k < 256; k++) {
+		if (l8[k] < l8[k - 1] - 0.5)
+			wobble = 0;
+		if (k >= 4 && !(l8[k] > l8[k - 4]))
+			mono8 = 0;
+	}
+	test_true(wobble && mono8, "8-bit colormap lightness monotone up to rounding");
+	/* Chromatic, not grey: viridis-like ends (blue-violet, yellow). */
+	rc_colormap_srgb(0, rgb);
+	test_true(rgb[2] > rgb[1] && rgb[2] > rgb[0], "first colour is blue-violet");
+	rc_colormap_srgb(1, rgb);
+	test_true(rgb[0] > rgb[2] && rgb[1] > rgb[2], "last colour is yellow");
+}
+
+static void
+test_linear(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(64, 32, 2.0, 1.0, &err);
+	struct image im;
+	uint8_t first[3], last[3], mid[3];
+	char *path = tmppath("h.png");
+
+	for (size_t j = 0; j < 32; j++)
+		for (size_t i = 0; i < 64; i++)
+			g->z[j * 64 + i] = sin(0.1 * i) * cos(0.2 * j);
+	g->z[5 * 64 + 3] = -2;		/* minimum */
+	g->z[20 * 64 + 10] = 3;		/* maximum */
+	g->z[7 * 64 + 40] = 0.5;	/* the middle of [-2, 3] */
+	test_true(write_png(g, path, RC_PNG_AUTO, 0, NULL) == 0, "write height PNG");
+	test_true(decode(path, &im) == 0, "libpng decodes it");
+	test_int((long long)im.width, 64, "width = nx (dx = dy)");
+	test_int((long long)im.height, 32, "height = ny");
+	rc_colormap_rgb8(0, first);
+	rc_colormap_rgb8(1, last);
+	rc_colormap_rgb8(128 / 255.0, mid);
+	test_true(same(pixel(&im, 3, 5), first), "minimum gets the first colour");
+	test_true(same(pixel(&im, 10, 20), last), "maximum gets the last colour");
+	test_true(same(pixel(&im, 40, 7), mid), "midpoint gets the middle colour");
+	free(im.rgb);
+
+	/* Overlay: a contact point drawn translucent over the height. */
+	rc_grid *mask = rc_grid_new(64, 32, 2.0, 1.0, &err);
+	uint8_t over[3] = RC_OVERLAY_RGB, want[3];
+	mask->kind = RC_KIND_MASK;
+	mask->z[20 * 64 + 10] = 1;
+	test_true(write_png(g, path, RC_PNG_AUTO, 0, mask) == 0, "write with overlay");
+	decode(path, &im);
+	for (int c = 0; c < 3; c++)
+		want[c] = (uint8_t)lrint((1 - RC_OVERLAY_ALPHA) * last[c] +
+		    RC_OVERLAY_ALPHA * over[c]);
+	test_true(same(pixel(&im, 10, 20), want), "overlay blends its colour");
+	test_true(same(pixel(&im, 3, 5), first), "no overlay where the mask is 0");
+	free(im.rgb);
+	rc_grid *small = rc_grid_new(8, 8, 1, 1, &err);
+	test_true(rc_png_write(g, path, &(rc_png_opts){ RC_PNG_AUTO, 0, small }, &err) != 0,
+	    "overlay of another size is an error (%s)", err.msg);
+	rc_grid_free(small);
+	rc_grid_free(mask);
+	rc_grid_free(g);
+}
+
+static void
+test_aspect_and_strip(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(64, 64, 2.0, 1.0, &err), *line;
+	struct image im;
+	uint8_t first[3], last[3];
+	char *path = tmppath("a.png");
+	int ok = 1;
+
+	for (size_t k = 0; k < 64 * 64; k++)
+		g->z[k] = (double)(k % 64);	/* rises along x */
+	write_png(g, path, RC_PNG_LINEAR, 0, NULL);
+	decode(path, &im);
+	/* dx = 2/64, dy = 1/64: square pixels of dy, 128 x 64. */
+	test_int((long long)im.width, 128, "aspect: width 2 lx/ly");
+	test_int((long long)im.height, 64, "aspect: height");
+	/* Upsampled in x: each grid column becomes two equal pixels. */
+	for (size_t u = 0; u < 128; u += 2)
+		ok &= memcmp(pixel(&im, u, 9), pixel(&im, u + 1, 9), 3) == 0;
+	test_true(ok, "upsampling repeats columns");
+	free(im.rgb);
+	rc_grid_free(g);
+
+	line = rc_grid_new(100, 1, 1.0, 1.0, &err);
+	for (size_t i = 0; i < 100; i++)
+		line->z[i] = (double)i;
+	write_png(line, path, RC_PNG_AUTO, 0, NULL);
+	decode(path, &im);
+	test_int((long long)im.width, 100, "line: one pixel per point");
+	test_true(im.height >= 16, "line: a strip at least 16 pixels tall (%zu)", im.height);
+	rc_colormap_rgb8(0, first);
+	rc_colormap_rgb8(1, last);
+	test_true(same(pixel(&im, 0, im.height - 1), first) &&
+	    same(pixel(&im, 99, 0), last), "line: strip coloured along x");
+	free(im.rgb);
+	rc_grid_free(line);
+}
+
+/* A 300 x 150 checkerboard mask shown at most 100 wide: 3x3 blocks hold 4
+ * or 5 set cells of 9, so each pixel is 4/9 or 5/9 of the way from the
+ * first mask colour to the second. */
+static void
+test_mask_downsampling(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(300, 150, 2.0, 1.0, &err);
+	struct image im;
+	uint8_t m0[3] = RC_MASK0_RGB, m1[3] = RC_MASK1_RGB, c4[3], c5[3];
+	char *path = tmppath("m.png");
+	int ok = 1;
+
+	g->kind = RC_KIND_MASK;
+	for (size_t j = 0; j < 150; j++)
+		for (size_t i = 0; i < 300; i++)
+			g->z[j * 300 + i] = (double)((i + j) % 2);
+	write_png(g, path, RC_PNG_AUTO, 100, NULL);
+	decode(path, &im);
+	test_int((long long)im.width, 100, "downsampled width = max_size");
+	test_int((long long)im.height, 50, "downsampled height keeps the aspect");
+	for (int c = 0; c < 3; c++) {
+		c4[c] = (uint8_t)lrint((5.0 / 9) * m0[c] + (4.0 / 9) * m1[c]);
+		c5[c] = (uint8_t)lrint((4.0 / 9) * m0[c] + (5.0 / 9) * m1[c]);
+	}
+	for (size_t v = 0; v < 50; v++)
+		for (size_t u = 0; u < 100; u++)
+			ok &= same(pixel(&im, u, v), (u + v) % 2 ? c5 : c4);
+	test_true(ok, "block average of the mask: 4/9 and 5/9 blends");
+	free(im.rgb);
+
+	/* Full resolution: exactly the two colours. */
+	write_png(g, path, RC_PNG_AUTO, 0, NULL);
+	decode(path, &im);
+	test_true(im.width == 300 && same(pixel(&im, 0, 0), m0) && same(pixel(&im, 1, 0), m1),
+	    "mask in two colours");
+	free(im.rgb);
+	rc_grid_free(g);
+
+	size_t w, h;
+	rc_png_size(2048, 1024, 2, 1, 0, &w, &h);
+	test_true(w == 1024 && h == 512, "default max_size 1024: 2048x1024 -> %zux%zu", w, h);
+	rc_png_size(4096, 4096, 1, 1, 300, &w, &h);
+	test_true(w == 300 && h == 300, "4096^2 at max 300 -> %zux%zu", w, h);
+}
+
+static void
+test_log(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(16, 16, 1, 1, &err);
+	struct image im;
+	uint8_t first[3], last[3], mid[3], nonpos[3] = RC_NONPOS_RGB;
+	char *path = tmppath("p.png");
+
+	g->kind = RC_KIND_PRESSURE;
+	g->z[1] = 1e-3;
+	g->z[2] = 10;
+	g->z[3] = 0.1;		/* log10 halfway between -3 and 1 */
+	g->z[4] = 2;
+	write_png(g, path, RC_PNG_AUTO, 0, NULL);
+	decode(path, &im);
+	rc_colormap_rgb8(0, first);
+	rc_colormap_rgb8(1, last);
+	rc_colormap_rgb8(lrint(255 * 0.5) / 255.0, mid);
+	test_true(same(pixel(&im, 0, 0), nonpos), "log: zero pressure drawn black");
+	test_true(same(pixel(&im, 1, 0), first), "log: smallest positive first colour");
+	test_true(same(pixel(&im, 2, 0), last), "log: largest last colour");
+	test_true(same(pixel(&im, 3, 0), mid), "log: geometric middle in the middle");
+	free(im.rgb);
+	rc_grid_free(g);
+}
+
+static void
+test_failures(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(8, 8, 1, 1, &err);
+	struct stat st;
+	char *path = tmppath("nodir/x.png");
+
+	test_true(rc_png_write(g, path, NULL, &err) != 0, "unwritable path fails (%s)", err.msg);
+	test_true(stat(path, &st) != 0, "and leaves no file");
+	test_true(rc_png_write(g, test_tmpdir(), NULL, &err) != 0,
+	    "a directory as output fails (%s)", err.msg);
+	rc_grid_free(g);
+}
+
+int
+main(void)
+{
+	test_colormap();
+	test_linear();
+	test_aspect_and_strip();
+	test_mask_downsampling();
+	test_log();
+	test_failures();
+	return test_summary();
+}
