@@ -40,7 +40,7 @@ TESTLIB_OBJ = $(O)/tests/testlib.o
 BENCH_SRC = $(wildcard bench/bench_*.c)
 BENCHES  = $(BENCH_SRC:bench/%.c=$(O)/bench/%)
 
-.PHONY: all check demo bench install uninstall clean deps
+.PHONY: all check demo bench install uninstall clean deps accuracy
 all: $(TOOLS)
 
 $(O)/%.o: %.c
@@ -68,6 +68,10 @@ bench: $(TOOLS) $(BENCHES)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
 	@for s in bench/*.sh; do [ -f "$$s" ] || continue; echo "== $$s"; RC_BIN=$(BIN) sh $$s || exit 1; done
 
+# accuracy of a_r against wall time (bench/accuracy/README.md)
+accuracy: $(TOOLS)
+	$(MAKE) -C bench/accuracy BIN=$(abspath $(BIN))
+
 demo: $(TOOLS)
 	@RC_BIN=$(BIN) sh data/demo.sh
 
@@ -88,5 +92,25 @@ deps:
 
 clean:
 	rm -rf build bin
+
+# make fuzz: build the libFuzzer harnesses of tests/fuzz with clang and run
+# each for FUZZ_SECONDS (default 60); crashes become regression files under
+# tests/data/fuzz/<harness>/ (replayed by test_fuzz_replay in make check).
+FUZZ_SECONDS ?= 60
+FUZZ_CC  ?= clang
+FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
+	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS)
+FUZZ_READ_SRC = lib/io.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
+	lib/grid.c lib/rc_err.c lib/atomic.c
+FUZZ_ROWS_SRC = lib/rows.c lib/rc_err.c
+.PHONY: fuzz
+fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)
+	@sh tests/fuzz/run.sh build/fuzz $(FUZZ_SECONDS) $(BIN)
+build/fuzz/fuzz_read: tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) lib/io.h lib/io_internal.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) $(PKG_LIBS) -lm
+build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/rows.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) -lm
 
 -include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d)

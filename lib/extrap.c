@@ -194,8 +194,41 @@ order_profile(const double *eps, const double *y, const size_t *idx, size_t n,
 	return 0;
 }
 
+static int extrapolate(const double *eps_in, const double *y, size_t n,
+    const rc_extrap_opts *o, rc_fit *fit, double *weight, rc_err *err);
+
+/* Fit y - y_finest and add y_finest back: the limit of constant data is
+ * then exactly that constant (a full contact stays a_r = 1), and the fit
+ * works on the small differences. */
 int
-rc_extrapolate(const double *eps_in, const double *y, size_t n,
+rc_extrapolate(const double *eps, const double *y, size_t n,
+    const rc_extrap_opts *o, rc_fit *fit, double *weight, rc_err *err)
+{
+	double *dy, shift;
+	size_t finest = 0;
+	int rc;
+
+	if (n == 0)
+		return extrapolate(eps, y, n, o, fit, weight, err);
+	for (size_t i = 1; i < n; i++)
+		if (eps[i] < eps[finest])
+			finest = i;
+	shift = y[finest];
+	if (!isfinite(shift))
+		return extrapolate(eps, y, n, o, fit, weight, err);
+	if ((dy = malloc(n * sizeof(*dy))) == NULL)
+		return rc_seterr(err, "out of memory");
+	for (size_t i = 0; i < n; i++)
+		dy[i] = y[i] - shift;
+	rc = extrapolate(eps, dy, n, o, fit, weight, err);
+	if (rc == 0)
+		fit->value += shift;
+	free(dy);
+	return rc;
+}
+
+static int
+extrapolate(const double *eps_in, const double *y, size_t n,
     const rc_extrap_opts *o, rc_fit *fit, double *weight, rc_err *err)
 {
 	size_t nk = o->auto_order ? 1 : o->nterms, need = o->auto_order ? 3 : nk + 1;

@@ -1,38 +1,38 @@
-/* fire.c - FIRE-GFMD: damped dynamics of the Fourier modes of the elastic
- * surface, hard wall in real space.
+/* fire.c - FIRE-GFMD: damped dynamics of the elastic surface heights
+ * u(r) against a hard wall, relaxed with FIRE (Bitzek et al. 2006; the
+ * FIRE 2.0 ordering of Guenole et al. 2020: mix after the velocity update).
  *
- * Degrees of freedom are the normalised coefficients u_q = FFT(u)/N.  The
- * energy per area is (1/2) sum_q k_q |u_q|^2 + p u_0, so the force on mode
- * q is F_q = -k_q u_q - p [q = 0].  Masses m_q = k_q make every mode's
- * frequency sqrt(k_q/m_q) = 1 (the preconditioning of Zhou, Moseler &
- * Mueser 2019); all times below are in units of that inverse frequency.
- * The q = 0 mode has no stiffness: its mass is MASS0_FACTOR times the
- * stiffness of the longest non-zero wave, the only elastic scale it
- * competes with when contact is sparse.
+ * One iteration: K u by one FFT pair (lib/elastic.c), the force
+ * f = -(p + K u) on every point; on the wall (u = h) a force pushing into
+ * it is taken up by the wall (f = 0, the point is in contact); FIRE's power
+ * P = f.v decides the step; v += dt f/m, v <- (1 - alpha) v +
+ * alpha |v| f/|f|; u += dt v; points that reach the wall stop there
+ * (u = h, v = 0).  Every quantity lives in real space, so the wall is exact
+ * (u >= h bit for bit) and the fixed point is the equilibrium.
  *
- * One iteration: semi-implicit Euler in Fourier space, with FIRE's
- * velocity mixing (Bitzek et al. 2006; mixing after the velocity update as
- * in FIRE 2.0, Guenole et al. 2020), then one c2r to real space, the
- * projection u = max(u, h) (the hard wall), and one r2c back: one FFT pair.
- * The velocity is not stored: after the projection it is recomputed from
- * the positions, v_q = (u_q(new, projected) - u_q(old)) / dt, so the wall
- * removes the velocity of the points it stops (a real-space velocity
- * projection obtained at no extra transform).  The power P = sum F.v uses
- * the full-spectrum sum over half-complex storage; the norms of v and of
- * a = F/m in the mixing are mass-weighted, |v|^2 = sum m |v|^2,
- * |a|^2 = sum m |a|^2 = sum |F|^2 / m.
+ * Why not Fourier-space masses m_q ~ k_q (Zhou, Moseler & Mueser 2019)?
+ * Tried first: with the hard wall applied by projection after the
+ * c2r, the preconditioned step a_q = F_q / m_q is non-local, spreads the
+ * wall's reaction over free points, and the iteration has no fixed point
+ * at the equilibrium (or, with the wall force removed before the
+ * preconditioning, the contact set flips every step and dt collapses);
+ * doing it right needs a second FFT pair per iteration.  The real-space
+ * variant costs one pair; its iteration count grows like
+ * sqrt(k_max / k_min) ~ sqrt(n) (see bench/bench_gfmd.c for the figures).
  *
- * Parameters (fixed; values chosen by tuning on self-affine surfaces):
- *   DT_START 0.1      initial time step (each solve starts here)
- *   DT_MAX   1.0      largest time step (semi-implicit Euler is stable
- *                     below 2 for frequency 1)
- *   N_MIN    5        positive-power steps before dt may grow
- *   F_INC    1.1      dt growth factor
- *   F_DEC    0.5      dt shrink factor on P <= 0
+ * Parameters (fixed, in units where the stiffest mode has frequency 1:
+ * the mass is m = k_max, so semi-implicit Euler is stable for dt < 2):
+ *   DT_START    0.1   initial time step (each solve starts here)
+ *   DT_MAX      1.0   largest time step
+ *   N_MIN       5     positive-power steps before dt may grow
+ *   F_INC       1.1   dt growth factor
+ *   F_DEC       0.5   dt shrink factor on P <= 0 (then v = 0)
  *   ALPHA_START 0.1   initial mixing, restored on P <= 0
- *   F_ALPHA  0.99     mixing decay per positive-power step past N_MIN
- *   MASS0_FACTOR 1    m_0 = MASS0_FACTOR * k_min
- *                     costs one c2r: K u in real space)
+ *   F_ALPHA     0.99  mixing decay per positive-power step past N_MIN
+ * The residual (solver.c) falls out of the force pass at no cost, so it is
+ * checked every iteration.  Start: u = max h (a flat body touching the
+ * highest point) unless a displacement is loaded or a previous solve left
+ * one (warm start).
  */
 #include "solver_impl.h"
 
@@ -52,7 +52,7 @@ int
 rc__fire_alloc(rc_solver *s, rc_err *err)
 {
 	s->u = fftw_alloc_real(s->n);
-	s->fire_vel = (fftw_complex *)fftw_alloc_real(s->n);
+	s->fire_vel = fftw_alloc_real(s->n);
 	if (s->u == NULL || s->fire_vel == NULL)
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FIRE buffers)",
 		    2 * s->n * sizeof(double));
@@ -70,9 +70,9 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power,
 {
 	rc_elastic *e = &s->el;
 	size_t k, n = s->n, on = 0;
-	double inv_n = 1.0 / (double)n, sum_d2 = 0, sum_s = 0, force, load;
+	double sum_d2 = 0, sum_s = 0;
 	double pw = 0, v2 = 0, f2 = 0;
-	const double *u = s->u, *h = s->height, *v = (const double *)s->fire_vel;
+	const double *u = s->u, *h = s->height, *v = s->fire_vel;
 	double *f = s->sigma;
 	unsigned char *contact = s->contact;
 
@@ -99,9 +99,7 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power,
 	*power = pw;
 	*vv = v2;
 	*ff = f2;
-	force = sqrt(sum_d2 * inv_n) / p;
-	load = fabs(sum_s * inv_n - p) / p;
-	return force > load ? force : load;
+	return rc__residual(s, p, sum_d2, sum_s);
 }
 
 /* sigma on the contact set wall_force found; returns the elastic energy
@@ -127,7 +125,7 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	size_t n = s->n, k, n_contact = 0;
 	double inv_mass = 1.0 / s->el.k_max;
 	double dt = DT_START, alpha = ALPHA_START, residual = HUGE_VAL;
-	double *u = s->u, *v = (double *)s->fire_vel, *f = s->sigma;
+	double *u = s->u, *v = s->fire_vel, *f = s->sigma;
 	const double *h = s->height;
 	long it, npos = 0;
 	int status = 1;

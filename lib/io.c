@@ -203,10 +203,23 @@ decode_one(const unsigned char *p, const rc_layout *l)
 }
 
 /* Values first .. first+n-1 of the file, raw in p, into g. */
+static int
+host_is_little_endian(void)
+{
+	const uint16_t one = 1;
+
+	return *(const unsigned char *)&one == 1;
+}
+
 static void
 decode(const unsigned char *p, size_t first, size_t n, const rc_layout *l,
     rc_grid *g)
 {
+	if (l->elsize == 8 && !l->big_endian && !l->fortran &&
+	    host_is_little_endian()) {
+		memcpy(g->z + first, p, n * 8);
+		return;
+	}
 	for (size_t k = 0; k < n; k++) {
 		size_t idx = first + k, dst;
 
@@ -275,17 +288,23 @@ rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 		free(buf);
 		buf = NULL;
 	} else {
-		/* A pipe: read piece by piece, allocate the grid once all is in. */
-		size_t maxchunks = (need + CHUNK - 1) / CHUNK;
+		/* A pipe: read piece by piece, growing from 64 KiB to CHUNK, and
+		 * allocate the grid once all is in: a lying header costs about
+		 * as much memory as the input really holds. */
+		size_t maxchunks = 10 + need / CHUNK, piece = (size_t)64 << 10;
+		size_t *bytes;
 
-		if ((chunk = rc_calloc(maxchunks, sizeof(*chunk), err)) == NULL)
+		if ((chunk = rc_calloc(maxchunks, sizeof(*chunk) + sizeof(*bytes),
+		    err)) == NULL)
 			return NULL;
+		bytes = (size_t *)(chunk + maxchunks);
 		while (got < need) {
-			size_t want = need - got < CHUNK ? need - got : CHUNK, r;
+			size_t want = need - got < piece ? need - got : piece, r;
 
 			if ((chunk[nchunk] = rc_malloc(want, err)) == NULL)
 				goto fail;
-			r = rc_in_read(in, chunk[nchunk++], want);
+			r = rc_in_read(in, chunk[nchunk], want);
+			bytes[nchunk++] = r;
 			got += r;
 			if (r < want) {
 				if (rc_in_check(in, err) == 0)
@@ -293,14 +312,16 @@ rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 					    need, got);
 				goto fail;
 			}
+			if (piece < CHUNK)
+				piece *= 2;
 		}
 		if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 			goto fail;
-		for (k = 0; k < nchunk; k++) {
-			size_t pieceval = CHUNK / l->elsize;
-			size_t n = k + 1 < nchunk ? pieceval : count - k * pieceval;
-
-			decode(chunk[k], k * pieceval, n, l, g);
+		/* Every piece is a power of two of at least 64 KiB, or the
+		 * rest: whole values each. */
+		for (k = 0, got = 0; k < nchunk; k++) {
+			decode(chunk[k], got / l->elsize, bytes[k] / l->elsize, l, g);
+			got += bytes[k];
 			free(chunk[k]);
 			chunk[k] = NULL;
 		}
@@ -441,6 +462,8 @@ rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
 	unsigned char buf[8192];
 	size_t per = sizeof(buf) / elsize;
 
+	if (elsize == 8 && host_is_little_endian())
+		return rc_io_write(fp, z, n * 8, err);
 	for (size_t i = 0; i < n; i += per) {
 		size_t m = n - i < per ? n - i : per;
 

@@ -66,7 +66,7 @@ static double
 final_check(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
 	double *u = s->u, *ku = s->el.fft.real;
 	const double *h = s->height, *sigma = s->sigma;
 
@@ -88,9 +88,7 @@ final_check(rc_solver *s, double p)
 		sum_e += ku[k] * u[k];
 	}
 	s->energy = 0.5 * sum_e / (double)n;
-	force = sqrt(sum_d2 / (double)n) / p;
-	load = fabs(sum_s / (double)n - p) / p;
-	return force > load ? force : load;
+	return rc__residual(s, p, sum_d2, sum_s);
 }
 
 /* Initial pressure: the previous solution rescaled, the pressure a loaded

@@ -124,10 +124,16 @@ rec_grow(rc_rowrec *r, size_t ncols)
 	return 0;
 }
 
-/* Set a cell from len bytes (null_value: JSON null). */
+enum { CELL_TEXT, CELL_NULL, CELL_STRING };
+
+/* Set a cell from len bytes: TSV text or a JSON number (a number if it
+ * reads as one), JSON null (NaN), or a JSON string (never a number: JSON
+ * is typed, "0.2" is text). */
 static int
-rec_set(rc_rowrec *r, size_t col, const char *text, size_t len, int null_value)
+rec_set(rc_rowrec *r, size_t col, const char *text, size_t len, int kind)
 {
+	int null_value = kind == CELL_NULL;
+
 	if (rec_grow(r, col + 1) != 0)
 		return -1;
 	free(r->str[col]);
@@ -137,7 +143,9 @@ rec_set(rc_rowrec *r, size_t col, const char *text, size_t len, int null_value)
 	if (null_value) {
 		r->num[col] = NAN;
 		r->isnum[col] = 1;
-	} else
+	} else if (kind == CELL_STRING)
+		r->isnum[col] = 0;
+	else
 		r->isnum[col] = (unsigned char)parse_number(r->str[col], &r->num[col]);
 	if (!r->isnum[col])
 		r->num[col] = NAN;
@@ -273,7 +281,7 @@ parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
 		for (size_t i = 0; i <= n; i++) {
 			if (i < n && s[i] != '\t')
 				continue;
-			if (rec_set(r, (size_t)map[f++], s + a, i - a, 0) != 0)
+			if (rec_set(r, (size_t)map[f++], s + a, i - a, CELL_TEXT) != 0)
 				goto nomem;
 			a = i + 1;
 		}
@@ -545,6 +553,9 @@ jobject(jcur *j, rc_rowset *rs, int lenient)
 			return -1;
 		if (j->buflen == 0)
 			return jfail(j, "empty key");
+		for (size_t k = 0; k < j->buflen; k++)
+			if ((unsigned char)j->buf[k] < 0x20)
+				return jfail(j, "control character in a key");
 		int c = column_add(rs, j->buf, j->buflen);
 		if (c < 0)
 			return jfail(j, "out of memory");
@@ -557,8 +568,9 @@ jobject(jcur *j, rc_rowset *rs, int lenient)
 			return jfail(j, "expected ':' after a key");
 		j->pos++;
 		jws(j);
-		int v = jpeek(j), isnull = 0, ok = 1;
+		int v = jpeek(j), kind = CELL_TEXT, ok = 1;
 		if (v == '"') {
+			kind = CELL_STRING;
 			if (jstring(j) != 0)
 				return -1;
 		} else if (v == '-' || (v >= '0' && v <= '9')) {
@@ -575,7 +587,7 @@ jobject(jcur *j, rc_rowset *rs, int lenient)
 		} else if (v == 'n') {
 			if (jword(j, "null") != 0)
 				return -1;
-			isnull = 1;
+			kind = CELL_NULL;
 		} else if (v == '{' || v == '[') {
 			if (!lenient)
 				return jfail(j, "nested value: rows must be flat objects");
@@ -593,7 +605,7 @@ jobject(jcur *j, rc_rowset *rs, int lenient)
 			snprintf(j->msg, sizeof(j->msg), "%s", why);
 			return -1;
 		}
-		if (ok && !dup && rec_set(r, (size_t)c, j->buf, j->buflen, isnull) != 0)
+		if (ok && !dup && rec_set(r, (size_t)c, j->buf, j->buflen, kind) != 0)
 			return jfail(j, "out of memory");
 		jws(j);
 		v = jpeek(j);

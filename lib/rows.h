@@ -1,8 +1,9 @@
 /* rows.h - read result rows (TSV with one header line, or a JSON array of
  * flat objects) from any number of files into one table of named columns.
  *
- * Every cell keeps its text and, when the text is a number, its value
- * (JSON null and the TSV words nan/inf count as numbers: NaN, +-inf).  A
+ * Every cell keeps its text and, when it is a number, its value: a TSV
+ * field that strtod reads whole (nan and inf included), a JSON number, or
+ * JSON null (NaN).  JSON strings and true/false are text, never numbers.  A
  * column absent from a row's file is absent in that row (NULL text).
  * Every row remembers its file and line.  Errors name file, line and
  * column ("name:line:col: why").  The reader accepts arbitrary bytes: it

@@ -16,9 +16,8 @@ struct rc_solver {
 	double *u;		/* elastic surface height; FIRE: el.fft.real */
 	double *sigma;		/* contact pressure, n */
 	unsigned char *contact;	/* n */
-	/* FIRE: velocity (later the previous positions) in half-complex
-	 * storage, and a spectrum for K u at convergence checks. */
-	fftw_complex *fire_vel, *fire_aux;
+	/* FIRE: the velocity, n. */
+	double *fire_vel;
 	/* CG: the conjugate direction. */
 	double *cg_dir;
 	int have_u;		/* u holds a state to start from */
@@ -27,10 +26,9 @@ struct rc_solver {
 	double energy;		/* elastic energy per area of the solution */
 };
 
-/* Both methods' convergence measure for an admissible pair: u >= h,
- * sigma >= 0 and zero off contact, sigma_implied = p + K u (see solver.c). */
-double rc__residual(const rc_solver *s, double p, const double *sigma,
-    const double *sigma_implied);
+/* Both methods' convergence measure (see solver.c) from the sum over all
+ * points of (p + K u - sigma)^2 and the sum of sigma. */
+double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma);
 double rc__seconds(void);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);

@@ -60,9 +60,10 @@ test_identity_and_direction(void)
 	rc_deriv_fields(g, RC_DERIV_FD, NULL, NULL, NULL, lap0, NULL, &err);
 	rc_deriv_fields(c, RC_DERIV_FD, NULL, NULL, NULL, lap2, NULL, &err);
 	double rmax = lap2[imax] / lap0[imax], rmin = lap2[imin] / lap0[imin];
-	/* At a grid maximum the gradient is not exactly zero: allow 20%. */
-	test_rel(rmax, 1.0 / 3, 0.2, "w = 2 multiplies the peak curvature by (1+w)(1/3)^w = 1/3");
-	test_rel(rmin, 4.0 / 3, 0.2, "w = 2 multiplies the valley curvature by (1+w)(2/3)^w = 4/3");
+	/* The grid maximum is not the exact maximum and the Laplacian is a
+	 * 5-point one: observed 0.6% off; allow 2%. */
+	test_rel(rmax, 1.0 / 3, 0.02, "w = 2 multiplies the peak curvature by (1+w)(1/3)^w = 1/3");
+	test_rel(rmin, 4.0 / 3, 0.02, "w = 2 multiplies the valley curvature by (1+w)(2/3)^w = 4/3");
 	rc_grid_free(c);
 
 	c = rc_grid_clone(g, 1, &err);

@@ -37,7 +37,6 @@ enum {
 	OPT_P_REF
 };
 
-#define MAXERRS 20	/* messages shown before "... and N more" */
 
 /* Columns gfmd-solve computes: never grouping keys.  nx and ny are the
  * discretisation; everything else (lx, ly, method and the surface's
@@ -47,6 +46,12 @@ static const char *const output_cols[] = {
 	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
 	"residual", "seconds", "nx", "ny", NULL
+};
+
+/* Metadata derived from the sampled heights, which differ slightly between
+ * grids of the same surface: not keys unless --group-by names them. */
+static const char *const derived_cols[] = {
+	"warp_hmin", "warp_hmax", NULL
 };
 
 /* Our own output columns; a key column with one of these names is written
@@ -71,10 +76,12 @@ usage(void)
 "  -o FILE             output (default standard output)\n"
 "  --json              JSON instead of TSV\n"
 "  -q                  no warnings about missing optional columns\n"
+"  -j N                accepted like every tool's; no effect (one thread)\n"
 "  --group-by COLS     key columns (comma list) instead of all carried ones\n"
 "  --ignore COLS       drop these columns from the keys\n"
 "  --order K[,K...]|auto  exponents of the eps_c corrections (default 1);\n"
-"                      auto fits one exponent (needs 3 discretisations)\n"
+"                      auto fits one exponent (3+ discretisations; linear\n"
+"                      with 2)\n"
 "  --fit finest|lsq    exact through the finest points (default) or least\n"
 "                      squares over all\n"
 "  --alpha A           Yastrebov's alpha in Eq. 22 (default (pi-1+ln2)/24)\n"
@@ -134,7 +141,7 @@ static int *is_key;		/* per rowset column */
 static int col_seed, col_lambda_s, col_lambda_r, col_lx, col_ly;
 static int excl_lambda_s, excl_lx;	/* limits taken: key shows "limit" */
 static size_t nerrs, nskipped;
-static char first_skip[1024];
+static char first_skip[1024], first_err[1024];
 
 /* A data problem: an error, or with --lenient a skipped item. */
 static void
@@ -155,18 +162,22 @@ bad(const struct opts *o, const char *fmt, ...)
 			snprintf(first_skip, sizeof(first_skip), "%s", msg);
 		return;
 	}
-	if (nerrs++ < MAXERRS)
-		fprintf(stderr, "%s: %s\n", t.name, msg);
+	if (nerrs++ == 0)
+		snprintf(first_err, sizeof(first_err), "%s", msg);
 }
 
+/* One line for all the data problems found in a pass: the first, and how
+ * many more (a broken input gives exactly one line). */
 static void
 errors_exit(void)
 {
 	if (nerrs == 0)
 		return;
-	if (nerrs > MAXERRS)
-		fprintf(stderr, "%s: ... and %zu more errors\n", t.name,
-		    nerrs - MAXERRS);
+	if (nerrs > 1)
+		fprintf(stderr, "%s: %s (and %zu more problem%s)\n", t.name,
+		    first_err, nerrs - 1, nerrs == 2 ? "" : "s");
+	else
+		fprintf(stderr, "%s: %s\n", t.name, first_err);
 	exit(tool_exit(&t, 1));
 }
 
@@ -289,6 +300,22 @@ make_key(size_t row, double p_star, int keep_seed, int with_p)
 	return k;
 }
 
+/* Up to 40 bytes of a cell for a message, control characters as '?', so
+ * that every message stays on one line. */
+static const char *
+shown(const char *s)
+{
+	static char buf[2][48];
+	static int k;
+	size_t i;
+
+	k ^= 1;
+	for (i = 0; s[i] && i < 40; i++)
+		buf[k][i] = (unsigned char)s[i] < 0x20 || s[i] == 0x7f ? '?' : s[i];
+	buf[k][i] = '\0';
+	return buf[k];
+}
+
 /* "p_star=0.05 H=0.8 seed=3" for messages. */
 static const char *
 group_name(size_t row, double p_star, int keep_seed)
@@ -306,17 +333,21 @@ group_name(size_t row, double p_star, int keep_seed)
 		s = rc_rows_str(&rs, row, (int)c);
 		len = strlen(buf);
 		snprintf(buf + len, sizeof(buf) - len, " %s=%s", rs.col[c],
-		    s ? s : "(absent)");
+		    s ? shown(s) : "(absent)");
 	}
 	return buf;
 }
 
+/* "file:line" of a row; two buffers, so one message can name two rows. */
 static const char *
 where(size_t row)
 {
-	static char buf[1100];
-	snprintf(buf, sizeof(buf), "%s:%ld", rs.row[row].file, rs.row[row].line);
-	return buf;
+	static char buf[2][1100];
+	static int k;
+	k ^= 1;
+	snprintf(buf[k], sizeof(buf[k]), "%s:%ld", rs.row[row].file,
+	    rs.row[row].line);
+	return buf[k];
 }
 
 /* ---- input ---- */
@@ -334,7 +365,7 @@ read_inputs(int argc, char **argv, const struct opts *o)
 		if (rc_is_stdio(path)) {
 			if (isatty(STDIN_FILENO))
 				tool_fail(&t, "standard input: is a terminal; give files or a pipe");
-			rc = rc_rows_read(&rs, stdin, "(stdin)", o->lenient, &err);
+			rc = rc_rows_read(&rs, stdin, "standard input", o->lenient, &err);
 		} else {
 			if ((fp = fopen(path, "rb")) == NULL)
 				tool_fail(&t, "%s: %s", path, strerror(errno));
@@ -370,7 +401,8 @@ choose_keys(const struct opts *o)
 			is_key[c] = in_list(name, (const char *const *)o->group_by,
 			    o->ngroup_by) || strcmp(name, "seed") == 0;
 		else
-			is_key[c] = !in_list(name, output_cols, 0);
+			is_key[c] = !in_list(name, output_cols, 0) &&
+			    !in_list(name, derived_cols, 0);
 		if (in_list(name, (const char *const *)o->ignore, o->nignore) ||
 		    strcmp(name, "nx") == 0 || strcmp(name, "ny") == 0 ||
 		    strcmp(name, "p_star") == 0)
@@ -395,8 +427,8 @@ need_num(const struct opts *o, size_t row, const char *name, double *v)
 		return -1;
 	}
 	if (rc_rows_num(&rs, row, c, v) != 0 || !isfinite(*v)) {
-		bad(o, "%s: column '%s': '%.40s' is not a finite number", where(row),
-		    name, s);
+		bad(o, "%s: column '%s': '%s' is not a finite number", where(row),
+		    name, shown(s));
 		return -1;
 	}
 	return 0;
@@ -413,7 +445,8 @@ opt_num(const struct opts *o, size_t row, const char *name, double *v)
 	if (s == NULL)
 		return 0;
 	if (rc_rows_num(&rs, row, c, v) != 0 || isinf(*v)) {
-		bad(o, "%s: column '%s': '%.40s' is not a number", where(row), name, s);
+		bad(o, "%s: column '%s': '%s' is not a number", where(row), name,
+		    shown(s));
 		return -1;
 	}
 	return 0;
@@ -498,7 +531,9 @@ by_key_rec(const void *a, const void *b)
 	int c = strcmp(x->key, y->key);
 	if (c)
 		return c;
-	return (x->eps_c > y->eps_c) - (x->eps_c < y->eps_c);
+	if (x->eps_c != y->eps_c)
+		return (x->eps_c > y->eps_c) - (x->eps_c < y->eps_c);
+	return (x->row > y->row) - (x->row < y->row);
 }
 
 static int
@@ -516,6 +551,25 @@ list_append(char *buf, size_t len, double v)
 {
 	size_t n = strlen(buf);
 	snprintf(buf + n, len - n, "%s%.6g", n ? "," : "", v);
+}
+
+/* Add a member's eps_c list to an ensemble's: distinct lists joined by ';'. */
+static void
+list_merge(char *dst, size_t len, const char *src)
+{
+	size_t n = strlen(src), dl = strlen(dst);
+	for (const char *p = dst; p && *p; p = strchr(p, ';') ? strchr(p, ';') + 1 : NULL)
+		if (strncmp(p, src, n) == 0 && (p[n] == ';' || p[n] == '\0'))
+			return;
+	if (dl + n + 2 <= len)
+		snprintf(dst + dl, len - dl, ";%s", src);
+}
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+	return (x > y) - (x < y);
 }
 
 static const char *
@@ -549,17 +603,29 @@ stage_continuum(const struct opts *o, struct rec *r, size_t n, size_t *nout)
 	for (size_t i = 0; i < n; i++)
 		r[i].key = make_key(r[i].row, r[i].p_star, 1, 1);
 	qsort(r, n, sizeof(*r), by_key_rec);
-	for (size_t a = 0, b; a < n; a = b) {
-		int dup = 0;
-		for (b = a + 1; b < n && strcmp(r[b].key, r[a].key) == 0; b++)
-			if (r[b].eps_c == r[b - 1].eps_c) {
-				bad(o, "%s and %s: duplicate rows (same surface, p_star and "
-				    "grid %ldx%ld)", where(r[b - 1].row), where(r[b].row),
-				    r[b].nx, r[b].ny);
-				dup = 1;
+	/* Duplicates: an error, or with --lenient the later row is dropped. */
+	size_t kept = n ? 1 : 0;
+	for (size_t i = 1; i < n; i++) {
+		struct rec *prev = &r[kept - 1];
+		if (strcmp(r[i].key, prev->key) == 0 && r[i].eps_c == prev->eps_c) {
+			bad(o, "%s and %s: duplicate rows (same surface, p_star and "
+			    "grid %ldx%ld)", where(prev->row), where(r[i].row),
+			    r[i].nx, r[i].ny);
+			if (o->lenient) {
+				free(r[i].key);
+				r[i].key = NULL;
+				continue;
 			}
-		if (dup)
-			continue;
+		}
+		r[kept++] = r[i];
+	}
+	for (size_t i = kept; i < n; i++)
+		r[i].key = NULL;
+	n = kept;
+	errors_exit();
+	for (size_t a = 0, b; a < n; a = b) {
+		for (b = a + 1; b < n && strcmp(r[b].key, r[a].key) == 0; b++)
+			;
 		size_t m = b - a;
 		struct rec *f = &r[a];	/* finest: smallest eps_c */
 		struct est *x = &e[ne];
@@ -598,7 +664,17 @@ stage_continuum(const struct opts *o, struct rec *r, size_t n, size_t *nout)
 			ne++;
 			continue;
 		}
-		size_t need = o->cont.auto_order ? 3 : o->cont.nterms + 1;
+		/* --order auto fits the exponent where three or more grids
+		 * exist; with two it falls back to the linear model, flagged by
+		 * order_err = NaN. */
+		rc_extrap_opts model = o->cont;
+		if (model.auto_order && m == 2) {
+			model.auto_order = 0;
+			model.nterms = 1;
+			model.exponent[0] = 1;
+			model.kind = RC_FIT_FINEST;
+		}
+		size_t need = model.auto_order ? 3 : model.nterms + 1;
 		if (m < need) {
 			bad(o, "%s (%s): %zu discretisation%s, the extrapolation needs %zu "
 			    "(or use --no-extrapolate)", group_name(f->row, f->p_star, 1),
@@ -610,7 +686,7 @@ stage_continuum(const struct opts *o, struct rec *r, size_t n, size_t *nout)
 			eps[i] = r[a + i].eps_c;
 			y[i] = r[a + i].a_r;
 		}
-		if (rc_extrapolate(eps, y, m, &o->cont, &fit, w, &err) != 0) {
+		if (rc_extrapolate(eps, y, m, &model, &fit, w, &err) != 0) {
 			bad(o, "%s (%s): a_r: %s", group_name(f->row, f->p_star, 1),
 			    where(f->row), err.msg);
 			continue;
@@ -618,7 +694,8 @@ stage_continuum(const struct opts *o, struct rec *r, size_t n, size_t *nout)
 		x->a_r = x->a_rich = fit.value;
 		x->a_r_err = fit.err;
 		x->order = fit.order;
-		x->order_err = fit.order_err;
+		x->order_err = o->cont.auto_order && !model.auto_order ? NAN :
+		    fit.order_err;
 		x->n_disc = m;
 		x->gratio = x->gratio_err = NAN;
 		if (have_g) {
@@ -627,7 +704,7 @@ stage_continuum(const struct opts *o, struct rec *r, size_t n, size_t *nout)
 			/* gbar_c/gbar with the same model; with auto the exponent is
 			 * fitted for this ratio separately, and when no power law
 			 * fits, the finest value is used with its last change as error. */
-			if (rc_extrapolate(eps, y, m, &o->cont, &gfit, NULL, &err) == 0) {
+			if (rc_extrapolate(eps, y, m, &model, &gfit, NULL, &err) == 0) {
 				x->gratio = gfit.value;
 				x->gratio_err = gfit.err;
 			} else {
@@ -690,8 +767,7 @@ stage_ensemble(struct est *in, size_t n, size_t *nout)
 			mean_err += in[i].a_r_err / (double)m;
 			mean_gerr += in[i].gratio_err / (double)m;
 			x->n_disc = in[i].n_disc < x->n_disc ? in[i].n_disc : x->n_disc;
-			if (strcmp(in[i].eps_c_list, in[a].eps_c_list) != 0)
-				snprintf(x->eps_c_list, sizeof(x->eps_c_list), "mixed");
+			list_merge(x->eps_c_list, sizeof(x->eps_c_list), in[i].eps_c_list);
 		}
 		if (rc_ensemble_stats(v, m, &st, &err) != 0)
 			tool_fail(&t, "%s: %s", group_name(x->row, x->p_star, 0), err.msg);
@@ -787,8 +863,17 @@ stage_limit(const struct opts *o, struct est *in, size_t n, int which,
 			g += wi * in[i].gratio;
 			x->n_seeds = in[i].n_seeds < x->n_seeds ? in[i].n_seeds : x->n_seeds;
 			x->n_disc = in[i].n_disc < x->n_disc ? in[i].n_disc : x->n_disc;
-			list_append(list, 256, eps[i - a]);
+			list_merge(x->eps_c_list, sizeof(x->eps_c_list), in[i].eps_c_list);
 		}
+		/* the eps values used, increasing */
+		double *sorted = malloc(m * sizeof(double));
+		if (sorted == NULL)
+			tool_fail(&t, "out of memory");
+		memcpy(sorted, eps, m * sizeof(double));
+		qsort(sorted, m, sizeof(double), cmp_double);
+		for (size_t i = 0; i < m; i++)
+			list_append(list, 256, sorted[i]);
+		free(sorted);
 		/* The ratio's model error: how far the extrapolation moves it
 		 * from the member at the smallest eps (cf. a two-point estimate). */
 		size_t best = 0;
@@ -1019,6 +1104,13 @@ write_gnuplot(const struct opts *o, const struct est *e, size_t n)
 	    "set ylabel 'kappa'\n"
 	    "set key outside right\n"
 	    "set grid\n", path, png, png);
+	double pmin = INFINITY, pmax = 0;
+	for (size_t i = 0; i < n; i++) {
+		pmin = fmin(pmin, e[i].p_star);
+		pmax = fmax(pmax, e[i].p_star);
+	}
+	/* reference lines across the whole range, a margin around the data */
+	fprintf(fp, "set xrange [%.6g:%.6g]\n", pmin / 1.5, pmax * 1.5);
 	size_t ncurve = 0;
 	for (size_t a = 0, b; a < n; a = b) {
 		for (b = a + 1; b < n && strncmp(e[b].key, e[a].key, 20) == 0; b++)
@@ -1074,7 +1166,7 @@ run_schedule(const struct opts *o)
 	rc_row_free(&row);
 	if (rc_atomic_commit(&out, &err) != 0)
 		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
-	return tool_exit(&t, 0);
+	return 0;
 }
 
 int
@@ -1103,7 +1195,7 @@ main(int argc, char **argv)
 		{ NULL, 0, NULL, 0 }
 	};
 	struct opts o;
-	int c, have_eps_ref = 0, have_p_ref = 0, fit_set = 0;
+	int c, have_eps_ref = 0, have_p_ref = 0, have_p = 0, fit_set = 0;
 
 	tool_init(&t, "contact-stats", argc, argv);
 	memset(&o, 0, sizeof(o));
@@ -1111,12 +1203,13 @@ main(int argc, char **argv)
 	order_arg("--order", "1", &o.cont, 1);
 	order_arg("--alpha-f", "1", &o.frac, 0);
 	order_arg("--alpha-t", "1", &o.therm, 0);
-	while ((c = getopt_long(argc, argv, "o:p:qh", longopts, NULL)) != -1) {
+	while ((c = getopt_long(argc, argv, "o:p:j:qh", longopts, NULL)) != -1) {
 		switch (c) {
 		case 'h':
 			usage();
 			return tool_exit(&t, 0);
 		case 'p':
+			have_p = 1;
 			free(o.pressures);
 			if (tool_double_list(&t, "-p", optarg, &o.pressures,
 			    &o.npressures) == 0)
@@ -1196,12 +1289,12 @@ main(int argc, char **argv)
 		}
 	}
 	if (o.schedule) {
-		if (!have_eps_ref || !have_p_ref || o.npressures == 0)
+		if (!have_eps_ref || !have_p_ref || !have_p)
 			tool_bad(&t, "--schedule needs --eps-ref, --p-ref and -p");
 		if (optind < argc)
 			tool_bad(&t, "--schedule reads no input files");
 	} else {
-		if (have_eps_ref || have_p_ref || o.npressures)
+		if (have_eps_ref || have_p_ref || have_p)
 			tool_bad(&t, "--eps-ref, --p-ref and -p belong to --schedule");
 		if (o.no_extrapolate && (o.cont.auto_order || o.cont.nterms > 1 ||
 		    o.cont.exponent[0] != 1 || fit_set))
@@ -1215,13 +1308,17 @@ main(int argc, char **argv)
 	if (!(fabs(o.alpha) < 1))
 		tool_bad(&t, "--alpha %g: want |alpha| < 1", o.alpha);
 	tool_usage_check(&t);
-	if (o.schedule)
-		return run_schedule(&o);
+	if (o.schedule) {
+		int st = run_schedule(&o);
+		free(o.pressures);
+		return tool_exit(&t, st);
+	}
 
 	rc_rows_init(&rs);
 	read_inputs(argc, argv, &o);
 	if (rs.nrows == 0)
-		tool_fail(&t, "no result rows in the input");
+		tool_fail(&t, "%s%s: no result rows (header only)", rs.file[0],
+		    rs.nfiles > 1 ? " and the other inputs" : "");
 	choose_keys(&o);
 
 	size_t nrec, ne, n2;

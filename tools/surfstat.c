@@ -314,6 +314,7 @@ main(int argc, char **argv)
 	rc_err err;
 
 	tool_init(&t, "surfstat", argc, argv);
+	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "ho:j:qL:", longopts, NULL)) != -1) {
 		if (tool_common_option(&t, opt, optarg))
 			continue;

@@ -2,36 +2,65 @@
  *
  * The input goes through the format detector twice: from memory (a stream
  * of unknown size, as a pipe) and from a regular file (whose size the
- * reader checks before allocating).  Any crash, leak, sanitizer report,
- * hang or allocation beyond -malloc_limit_mb is a bug.  Not part of the
- * default build; run from the top directory:
+ * reader checks before allocating).  Besides crashes, leaks, sanitizer
+ * reports, hangs and allocations beyond -malloc_limit_mb, the harness
+ * aborts when a reader breaks its contract: a failure without a one-line
+ * message, a grid with a bad shape or a non-finite value, or the two
+ * paths disagreeing (one accepts what the other rejects, or different
+ * values).  `make fuzz` builds and runs it (see the Makefile); a crashing
+ * input is kept under tests/data/fuzz/read/, which test_fuzz_replay
+ * feeds to this same function in `make check`.
  *
- *   clang -g -O1 -fsanitize=fuzzer,address,undefined -std=c11 \
- *       -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L -Ilib \
- *       tests/fuzz/fuzz_read.c lib/io.c lib/io_surf.c lib/io_npy.c \
- *       lib/io_gsf.c lib/io_txt.c lib/grid.c lib/rc_err.c lib/atomic.c \
- *       $(pkg-config --cflags --libs fftw3) -lm -o build/fuzz_read
- *   mkdir -p build/fuzz-corpus && cp tests/data/io_small.* build/fuzz-corpus
- *   build/fuzz_read -max_total_time=60 -malloc_limit_mb=256 \
- *       -max_len=4096 build/fuzz-corpus
- *
- * A crashing input is written to crash-<hash>; keep it under tests/data
- * as a regression file.
+ * FUZZ_ENTRY names the entry point: LLVMFuzzerTestOneInput for libFuzzer,
+ * something else when the replay test includes this file.
  */
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "io.h"
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+#ifndef FUZZ_ENTRY
+#define FUZZ_ENTRY LLVMFuzzerTestOneInput
+#endif
+
+int FUZZ_ENTRY(const uint8_t *data, size_t size);
+
+/* A failed read must say why, on one line. */
+static void
+read_check_failure(const rc_err *err)
+{
+	if (err->msg[0] == '\0' || strchr(err->msg, '\n') != NULL)
+		abort();
+}
+
+static void
+read_check_grid(const rc_grid *g)
+{
+	size_t n;
+
+	if (g->nx < 1 || g->ny < 1 || !(g->lx > 0) || !(g->ly > 0) ||
+	    !isfinite(g->lx) || !isfinite(g->ly))
+		abort();
+	n = g->nx * g->ny;
+	if (n / g->nx != g->ny)
+		abort();
+	for (size_t k = 0; k < n; k++)
+		if (!isfinite(g->z[k]))
+			abort();
+}
 
 int
-LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+FUZZ_ENTRY(const uint8_t *data, size_t size)
 {
+	/* -L 2x3: formats without a cell size get it; others ignore it. */
 	rc_read_opts o = { 2, 3, 1, 0 };
 	char path[] = "/tmp/fuzz_read.XXXXXX";
+	rc_grid *from_mem = NULL, *from_file = NULL;
+	int mem_tried = 0, file_tried = 0;
 	rc_err err;
 	FILE *fp;
 	int fd;
@@ -39,14 +68,36 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 	if (size == 0)
 		return 0;
 	if ((fp = fmemopen((void *)data, size, "rb")) != NULL) {
-		rc_grid_free(rc_grid_read_stream(fp, &o, &err));
+		mem_tried = 1;
+		err.msg[0] = '\0';
+		if ((from_mem = rc_grid_read_stream(fp, &o, &err)) == NULL)
+			read_check_failure(&err);
+		else
+			read_check_grid(from_mem);
 		fclose(fp);
 	}
 	if ((fd = mkstemp(path)) >= 0) {
-		if (write(fd, data, size) == (ssize_t)size)
-			rc_grid_free(rc_grid_read(path, NULL, &err));
+		if (write(fd, data, size) == (ssize_t)size) {
+			file_tried = 1;
+			err.msg[0] = '\0';
+			if ((from_file = rc_grid_read(path, &o, &err)) == NULL)
+				read_check_failure(&err);
+			else
+				read_check_grid(from_file);
+		}
 		close(fd);
 		unlink(path);
 	}
+	if (mem_tried && file_tried) {
+		if ((from_mem == NULL) != (from_file == NULL))
+			abort();
+		if (from_mem != NULL && (from_mem->nx != from_file->nx ||
+		    from_mem->ny != from_file->ny || from_mem->lx != from_file->lx ||
+		    from_mem->ly != from_file->ly || memcmp(from_mem->z, from_file->z,
+		    from_mem->nx * from_mem->ny * sizeof(double)) != 0))
+			abort();
+	}
+	rc_grid_free(from_mem);
+	rc_grid_free(from_file);
 	return 0;
 }

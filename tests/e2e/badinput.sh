@@ -1,0 +1,302 @@
+# Bad input everywhere: every grid reader (surfwarp, surfstat, gfmd-solve,
+# surfstat --mask, gfmd-solve --init, surfwarp --carve) fed broken files,
+# from a path and from a pipe; every tool fed out-of-range options; the
+# contact-stats row parser fed broken tables.
+#
+# A broken input must give exit 1 and exactly one line on stderr, of the
+# form "tool: NAME: reason" naming the input; a pre-existing output must be
+# left byte for byte as it was and no temporary file may remain.  A bad
+# option must give exit 2 with one line per problem (all of them at once)
+# plus the "N usage problems" line, and create no output.
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+D=$T_TMP/in
+W=$T_TMP/work
+mkdir -p "$D" "$W"
+n_bad=0
+
+surfgen -q -n 16 --seed 3 -o "$D/good.surf"
+surfgen -q -n 16 --seed 3 -o "$D/good.npy"
+surfgen -q -n 16 --seed 3 -o "$D/good.gsf"
+surfgen -q -n 4 --seed 3 -o "$D/good.txt"
+gfmd-solve -q -j 1 -p 0.1 --contact "$D/mask.surf" -o /dev/null "$D/good.surf"
+surfgen -q -n 8 --seed 3 -o "$D/small.surf"
+gfmd-solve -q -j 1 -p 0.1 --contact "$D/mask8.surf" -o /dev/null "$D/small.surf"
+
+# The data of good.surf start at data_offset (a multiple of 8).
+off=$(awk '/^data_offset = / { print $3; exit }' "$D/good.surf")
+head_of() { head -c "$off" "$D/good.surf"; }
+data_of() { tail -c +"$((off + 1))" "$D/good.surf"; }
+# surf_header KEY=VALUE...: good.surf's header with keys replaced (a value
+# "DELETE" drops the key), data_offset dropped so the lie is what is tested.
+surf_header() {
+	awk -v subs="$*" 'BEGIN { n = split(subs, s, " "); for (i = 1; i <= n; i++) {
+		k = substr(s[i], 1, index(s[i], "=") - 1); v[k] = substr(s[i], index(s[i], "=") + 1) } }
+		/^data_offset = / { next }
+		{ k = $1 } k in v { if (v[k] != "DELETE") print k " = " v[k]; next }
+		/^end_header/ { print "end_header"; exit } { print }' "$D/good.surf"
+}
+
+# --- broken grid files ------------------------------------------------------
+B=$D/bad
+mkdir -p "$B"
+: >"$B/empty"
+head -c 1000 "$D/good.surf" >"$B/truncated-data.surf"
+head -c 100 "$D/good.surf" >"$B/truncated-header.surf"
+head -c "$off" "$D/good.surf" >"$B/header-only.surf"
+{ cat "$D/good.surf"; printf 'x'; } >"$B/trailing-byte.surf"
+sed '1s/.*/#surf 2/' "$D/good.surf" >"$B/version2.surf"
+sed '1s/.*/#surX 1/' "$D/good.surf" >"$B/wrong-magic.surf"
+printf '\177ELF\002\001\001\000\000\000\000\000\000\000\000\000' >"$B/elf-binary"
+for lie in nx=17 ny=15 nx=0 ny=-4 nx=1e3 nx=16.5 nx= \
+    nx=99999999999999999999999 nx=4294967296:ny=4294967296 nx=16777217 \
+    lx=-1 lx=0 lx=nan ly=inf lx=1e999 kind=wobble encoding=float32-le \
+    nx=DELETE lx=DELETE; do
+	name=$(printf '%s' "$lie" | tr ':=' '_-')
+	{ surf_header $(printf '%s' "$lie" | tr ':' ' '); data_of; } >"$B/lie-$name.surf"
+done
+awk '/^data_offset = / { print "data_offset = 400"; next } { print }' "$D/good.surf" >"$B/lie-data-offset.surf"
+{ head -c 8 "$D/good.surf"; printf 'bogus line without equals\n'; tail -c +9 "$D/good.surf"; } >"$B/not-key-value.surf"
+{ head -c 8 "$D/good.surf"; printf 'nx = 16\n'; tail -c +9 "$D/good.surf"; } >"$B/duplicate-key.surf"
+{ head -c 8 "$D/good.surf"; printf 'ctl = \001\n'; tail -c +9 "$D/good.surf"; } >"$B/control-char.surf"
+{ printf '#surf 1\n'; head -c 1100000 /dev/zero | tr '\0' 'a'; } >"$B/endless-header.surf"
+# NaN and +Inf as the first value (little-endian float64).
+{ head_of; printf '\000\000\000\000\000\000\370\177'; data_of | tail -c +9; } >"$B/nan.surf"
+{ head_of; printf '\000\000\000\000\000\000\360\177'; data_of | tail -c +9; } >"$B/inf.surf"
+# A mask with a value that is neither 0 nor 1.
+moff=$(awk '/^data_offset = / { print $3; exit }' "$D/mask.surf")
+{ head -c "$moff" "$D/mask.surf"; printf '\000\000\000\000\000\000\340\077'; tail -c +"$((moff + 9))" "$D/mask.surf"; } >"$B/mask-half.surf"
+# npy
+npy() {	# npy HEADER-DICT: version 1.0, header padded to 128 bytes, then data
+	h=$1; pad=$((128 - 10 - ${#h} - 1))
+	printf '\223NUMPY\001\000\166\000%s%*s\n' "$h" "$pad" ''
+}
+{ npy "{'descr': '<f8', 'fortran_order': False, 'shape': (16, 17), }"; tail -c 2048 "$D/good.npy"; } >"$B/npy-shape-lie.npy"
+{ npy "{'descr': '<i4', 'fortran_order': False, 'shape': (16, 16), }"; tail -c 2048 "$D/good.npy"; } >"$B/npy-int.npy"
+{ npy "{'descr': '<f8', 'fortran_order': False, 'shape': (0, 16), }"; } >"$B/npy-zero.npy"
+{ npy "{'descr': '<f8', 'fortran_order': False, 'shape': (4294967296, 4294967296), }"; } >"$B/npy-overflow.npy"
+{ npy "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2, 2), }"; head -c 64 /dev/zero; } >"$B/npy-3d.npy"
+{ npy "{'descr': '<f8', 'shape': (16, 16), }"; tail -c 2048 "$D/good.npy"; } >"$B/npy-no-order.npy"
+{ npy "{'descr': '<f8', 'fortran_order': False, 'shape': (16, 16"; tail -c 2048 "$D/good.npy"; } >"$B/npy-unclosed.npy"
+printf '\223NUMPY\001\000\377\377' >"$B/npy-header-len.npy"
+head -c 500 "$D/good.npy" >"$B/npy-truncated.npy"
+# gsf: header lies
+sed -e '1,/^YRes/s/^XRes = 16/XRes = 0/' "$D/good.gsf" >"$B/gsf-xres0.gsf"
+sed -e '1,/^YRes/s/^XRes = 16/XRes = -16/' "$D/good.gsf" >"$B/gsf-xres-neg.gsf"
+sed -e '1,/^YRes/s/^XRes = 16/XRes = 32/' "$D/good.gsf" >"$B/gsf-xres-lie.gsf"
+sed -e '1,/^YReal/s/^XReal = 1/XReal = -1/' "$D/good.gsf" >"$B/gsf-xreal-neg.gsf"
+head -c 400 "$D/good.gsf" >"$B/gsf-truncated.gsf"
+# txt
+printf '1 2 3\n4 5\n' >"$B/ragged.txt"
+printf '1 2\n3 x\n' >"$B/word.txt"
+printf '1 2\n3 nan\n' >"$B/nan.txt"
+printf '1 2\n3 1e999\n' >"$B/huge.txt"
+printf '# nx = 2\n# only comments\n' >"$B/comments-only.txt"
+printf '# nx = 3\n1 2\n3 4\n' >"$B/txt-nx-lie.txt"
+printf '1 \000\n3 4\n' >"$B/nul.txt"
+printf '\r\n\r\n' >"$B/blank-lines.txt"
+mkdir "$B/a-directory"
+nfiles=$(ls "$B" | wc -l)
+
+# --- the check -------------------------------------------------------------
+SENTINEL='an existing output that must survive'
+# fresh_work: the work directory holds only sentinel outputs.
+fresh_work() {
+	rm -rf "$W"; mkdir "$W"
+	for f in out.surf out.tsv gap.surf; do printf '%s\n' "$SENTINEL" >"$W/$f"; done
+}
+# expect_fail1 DESC NAME CMD...: run CMD in $W; exit 1, one stderr line
+# naming NAME with a reason, outputs intact, no new files.
+expect_fail1() {
+	d=$1 name=$2; shift 2
+	n_bad=$((n_bad + 1))
+	fresh_work
+	(cd "$W" && "$@") >"$T_TMP/stdout" 2>"$T_TMP/stderr" </dev/null
+	st=$?
+	why=""
+	[ "$st" = 1 ] || why="$why exit $st (want 1);"
+	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines (want 1);"
+	grep -qF -- "$name:" "$T_TMP/stderr" || why="$why message does not name '$name';"
+	grep -q ': [^:]*[a-zA-Z][^:]*' "$T_TMP/stderr" || why="$why no reason;"
+	for f in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	done
+	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
+	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
+}
+# same, with the input on a pipe (cat FILE | CMD)
+expect_fail1_pipe() {
+	d=$1 file=$2; shift 2
+	n_bad=$((n_bad + 1))
+	fresh_work
+	(cd "$W" && cat "$file" | "$@") >"$T_TMP/stdout" 2>"$T_TMP/stderr"
+	st=$?
+	why=""
+	[ "$st" = 1 ] || why="$why exit $st (want 1);"
+	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines;"
+	grep -qF -- "standard input: " "$T_TMP/stderr" || why="$why message does not name standard input;"
+	for f in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	done
+	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
+	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
+}
+
+G=$D/good.surf
+readers() {	# readers FILE: every reader on FILE
+	f=$1 b=$(basename "$1")
+	expect_fail1 "surfwarp $b" "$f" surfwarp -q -w 1 -o out.surf "$f"
+	expect_fail1 "surfstat $b" "$f" surfstat -q -o out.tsv "$f"
+	expect_fail1 "gfmd-solve $b" "$f" gfmd-solve -q -j 1 -p 0.1 --gap gap.surf -o out.tsv "$f"
+	expect_fail1 "surfstat --mask $b" "$f" surfstat -q --mask "$f" -o out.tsv "$G"
+	expect_fail1 "gfmd-solve --init $b" "$f" gfmd-solve -q -j 1 -p 0.1 --init "$f" --gap gap.surf -o out.tsv "$G"
+	expect_fail1 "surfwarp --carve $b" "$f" surfwarp -q --carve "$f" 0.1 -o out.surf "$G"
+}
+for f in "$B"/*; do
+	readers "$f"
+	[ -d "$f" ] && continue
+	b=$(basename "$f")
+	expect_fail1_pipe "surfwarp < $b" "$f" surfwarp -q -o out.surf
+	expect_fail1_pipe "surfstat < $b" "$f" surfstat -q -o out.tsv
+	expect_fail1_pipe "gfmd-solve < $b" "$f" gfmd-solve -q -j 1 -p 0.1 --gap gap.surf -o out.tsv
+done
+readers "$D/no-such-file.surf"
+# Sizes that do not match the indenter (a good file otherwise).
+expect_fail1 "surfstat --mask of another size" "$D/mask8.surf" surfstat -q --mask "$D/mask8.surf" -o out.tsv "$G"
+expect_fail1 "surfstat --mask with a 0.5" "$B/mask-half.surf" surfstat -q --mask "$B/mask-half.surf" -o out.tsv "$G"
+expect_fail1 "surfwarp --carve of another size" "$D/mask8.surf" surfwarp -q --carve "$D/mask8.surf" 0.1 -o out.surf "$G"
+expect_fail1 "gfmd-solve --init of another size" "$D/small.surf" gfmd-solve -q -j 1 -p 0.1 --init "$D/small.surf" --gap gap.surf -o out.tsv "$G"
+# Empty standard input (no pipe writer at all).
+expect_fail1 "surfwarp, empty stdin" "standard input" surfwarp -q -o out.surf
+expect_fail1 "surfstat, empty stdin" "standard input" surfstat -q -o out.tsv
+expect_fail1 "gfmd-solve, empty stdin" "standard input" gfmd-solve -q -j 1 -p 0.1 -o out.tsv
+# Unreadable: chmod 000 does not stop root, so only where it takes effect.
+cp "$G" "$D/unreadable.surf"; chmod 000 "$D/unreadable.surf"
+if cat "$D/unreadable.surf" >/dev/null 2>&1; then
+	echo "note: running as root: chmod 000 does not prevent reading; unreadable-file cases skipped"
+else
+	readers "$D/unreadable.surf"
+fi
+chmod 644 "$D/unreadable.surf"
+# The same good file still works through every reader (the harness is honest).
+check_status "surfwarp reads the good file" 0 surfwarp -q -w 1 -o "$W/ok.surf" "$G"
+check_status "surfstat reads the good .npy" 0 surfstat -q -o "$W/ok.tsv" "$D/good.npy"
+check_status "surfstat reads the good .gsf" 0 surfstat -q -o "$W/ok.tsv" "$D/good.gsf"
+check_status "surfstat reads the good .txt" 0 surfstat -q -o "$W/ok.tsv" "$D/good.txt"
+check_status "surfstat --mask reads the good mask" 0 surfstat -q --mask "$D/mask.surf" -o "$W/ok.tsv" "$G"
+
+# --- options ---------------------------------------------------------------
+# expect_usage DESC NPROBLEMS CMD...: exit 2, NPROBLEMS problem lines, then
+# the summary line counting them; nothing written.
+expect_usage() {
+	d=$1 want=$2; shift 2
+	n_bad=$((n_bad + want))
+	fresh_work
+	(cd "$W" && "$@") >"$T_TMP/stdout" 2>"$T_TMP/stderr" </dev/null
+	st=$?
+	why=""
+	[ "$st" = 2 ] || why="$why exit $st (want 2);"
+	lines=$(grep -cv 'usage problems\{0,1\}; see' "$T_TMP/stderr")
+	[ "$lines" = "$want" ] || why="$why $lines problem lines (want $want);"
+	grep -q ": $want usage problems\{0,1\}; see" "$T_TMP/stderr" || why="$why no summary counting $want;"
+	for f in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	done
+	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
+	[ -s "$T_TMP/stdout" ] && why="$why wrote to stdout;"
+	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 400 "$T_TMP/stderr")]"; fi
+}
+S="-q -o out.surf"
+for a in "-H 0" "-H 1" "-H 1.5" "-H -0.2" "-H nan" "-H abc" "-L -1" "-L 0" \
+    "-L 1x" "-L 1x-2" "-L inf" "-n 0" "-n -4" "-n 3x" "-n 99999999999" "-n 16x0" \
+    "--lambda-s 0.1" "--lambda-s -1" "--lambda-r -1" "--lambda-r 0" \
+    "--peklenik 0" "--peklenik -2" "--peklenik inf" "--seed -1" "--seed x" \
+    "--rms-gradient -1" "--rms-gradient inf" "--rms-height 0" "--type foo" \
+    "--type harmonic --radius -1" "--type harmonic --exponent 0" \
+    "--type sine --wavelength 0" "--type sine --amplitude nan" \
+    "-j 0" "-j x" "--bogus" "-o out.xyz"; do
+	expect_usage "surfgen -n 16 $a" 1 surfgen -n 16 $S $a
+done
+expect_usage "surfgen: eight problems at once" 8 surfgen $S -H 1.5 -L -1 -n 0 \
+    --peklenik 0 --seed x --rms-gradient inf --type foo --bogus
+for a in "-w nan" "-w inf" "-w x" "-w" "-w 1 --hmin 1 --hmax 0" "--rms-gradient -1" \
+    "--carve-width -1" "--carve-width nan" "-L 0" "-j -1" "--frobnicate" \
+    "-o out.bad"; do
+	expect_usage "surfwarp $a" 1 surfwarp $S $a "$G"
+done
+expect_usage "surfwarp: four problems at once" 4 surfwarp $S -w nan --rms-gradient -1 -L 0 --frob "$G"
+T="-q -o out.tsv"
+for a in "--bins-per-decade 0" "--bins-per-decade -3" "--bins-per-decade x" \
+    "--by-height 0" "--by-height -2" "-L -1" "--nope" "-j 0"; do
+	expect_usage "surfstat $a" 1 surfstat $T $a "$G"
+done
+expect_usage "surfstat: three problems at once" 3 surfstat $T --bins-per-decade 0 -L -1 --nope "$G"
+for a in "-p 0" "-p -0.1" "-p 0.1,,0.2" "-p 0.1,abc" "-p nan" "-p inf" "-p ''" \
+    "-p 0.1," "-E 0" "-E -1" "-E nan" "--tol 0" "--tol -1" "--max-iter 0" \
+    "--max-iter x" "--method foo" "--alpha nan" "-L 0" "--what"; do
+	eval "set -- $a"
+	expect_usage "gfmd-solve $a" 1 gfmd-solve $T -j 1 -p 0.1 "$@" "$G"
+done
+expect_usage "gfmd-solve without -p" 1 gfmd-solve $T -j 1 "$G"
+expect_usage "gfmd-solve --pressure-abs -1" 1 gfmd-solve $T -j 1 --pressure-abs -1 "$G"
+expect_usage "gfmd-solve -p and --pressure-abs" 1 gfmd-solve $T -j 1 -p 0.1 --pressure-abs 0.1 "$G"
+expect_usage "gfmd-solve: five problems at once" 5 gfmd-solve $T -j 1 -p 0 -E -1 --tol 0 --method foo --what "$G"
+for a in "--order x" "--order 0" "--fit foo" "--alpha nan" "--alpha-f x" \
+    "--alpha-t -1" "--zzz"; do
+	expect_usage "contact-stats $a" 1 contact-stats $T $a "$D/rows.tsv"
+done
+expect_usage "contact-stats --schedule without its parameters" 1 contact-stats -q --schedule
+expect_usage "contact-stats --schedule, bad parameters" 3 contact-stats -q --schedule --eps-ref -1 --p-ref 0 -p 0.1,x
+
+# --- contact-stats rows ----------------------------------------------------
+R=$D/rows
+mkdir -p "$R"
+hdr='p_star	a_r	n_c	n_cl	n_tot	gbar	gbar_c	nx	ny	lx	ly	lambda_r	lambda_s	seed	H	type'
+row1='0.1	0.2	100	30	500	1	1.2	32	32	1	1	0.5	0.0625	1	0.8	selfaffine'
+row2='0.1	0.19	400	120	2048	1	1.2	64	64	1	1	0.5	0.0625	1	0.8	selfaffine'
+printf '%s\n%s\n%s\n' "$hdr" "$row1" "$row2" >"$D/rows.tsv"
+check_status "contact-stats reads the good rows" 0 contact-stats -q -o "$W/ok.tsv" "$D/rows.tsv"
+good_rows() { cat "$D/rows.tsv"; }
+good_rows | awk -F'\t' -v OFS='\t' '{ $2 = ""; print }' | sed 's/\t\t/\t/' >"$R/no-a_r-column.tsv"
+good_rows | awk -F'\t' -v OFS='\t' '{ $1 = ""; print }' | sed 's/^\t//' >"$R/no-p_star-column.tsv"
+good_rows | sed '3s/0\.19/abc/' >"$R/a_r-word.tsv"
+good_rows | sed '3s/0\.19/1.5/' >"$R/a_r-above-1.tsv"
+good_rows | sed '3s/0\.19/-0.1/' >"$R/a_r-negative.tsv"
+good_rows | sed '3s/0\.19/nan/' >"$R/a_r-nan.tsv"
+good_rows | sed '3s/0\.19/0x1p-3junk/' >"$R/a_r-trailing.tsv"
+good_rows | sed '3s/\t64\t64/\tsixty\t64/' >"$R/nx-word.tsv"
+good_rows | sed '3s/\tselfaffine$//' >"$R/short-row.tsv"
+good_rows | sed '3s/$/\textra/' >"$R/long-row.tsv"
+good_rows | sed '1s/a_r/p_star/' >"$R/duplicate-column.tsv"
+printf '\377\376\000\001garbage\000\n\001\002\003\n' >"$R/garbage.bin"
+head -c 300 "$D/good.surf" >"$R/a-surface.surf"
+: >"$R/empty.tsv"
+printf '%s\n' "$hdr" >"$R/header-only.tsv"
+printf '[{"p_star": 0.1, "a_r":' >"$R/json-truncated.json"
+printf '[{"p_star": 0.1, "a_r": {"x": 1}}]' >"$R/json-nested.json"
+printf '[{"p_star": 0.1, "a_r": 0.2}' >"$R/json-unclosed.json"
+# A full row in JSON with a_r replaced.
+json_row() {
+	awk -F'\t' -v ar="$1" 'NR == 1 { for (i = 1; i <= NF; i++) k[i] = $i; next }
+		NR == 2 { printf "[{"; for (i = 1; i <= NF; i++) { v = k[i] == "a_r" ? ar : $i
+			if (v !~ /^[-0-9.e]+$/ && v != ar) v = "\"" v "\""
+			printf "%s\"%s\": %s", (i > 1 ? ", " : ""), k[i], v } print "}]"; exit }' "$D/rows.tsv"
+}
+json_row 0.2 >"$D/rows.json"
+check_status "contact-stats reads a good JSON row" 0 contact-stats -q --no-extrapolate -o "$W/ok.tsv" "$D/rows.json"
+json_row 1e999 >"$R/json-overflow.json"
+json_row true >"$R/json-a_r-true.json"
+printf '[{"p_star": 0.1, "a_r": "0.2\\uZZZZ"}]' >"$R/json-bad-escape.json"
+for f in "$R"/*; do
+	b=$(basename "$f")
+	# JSON files hold one discretisation: no extrapolation.
+	case $b in *.json) x=--no-extrapolate ;; *) x=--fit=finest ;; esac
+	expect_fail1 "contact-stats $b" "$f" contact-stats -q $x -o out.tsv "$f"
+done
+expect_fail1 "contact-stats, missing file" "$D/no-rows.tsv" contact-stats -q -o out.tsv "$D/no-rows.tsv"
+expect_fail1 "contact-stats, a directory" "$R" contact-stats -q -o out.tsv "$R"
+expect_fail1 "contact-stats, empty stdin" "standard input" contact-stats -q -o out.tsv
+expect_fail1 "contact-stats, good then bad file" "$R/a_r-word.tsv" contact-stats -q -o out.tsv "$D/rows.tsv" "$R/a_r-word.tsv"
+
+echo "bad inputs tried: $n_bad ($nfiles broken grid files)"
+summary
