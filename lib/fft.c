@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #ifdef _OPENMP
@@ -29,12 +30,18 @@ rc_fft_set_threads(int n)
 #endif
 }
 
+/* Room FFTW needs beyond the two buffers, with a wide margin (measured:
+ * 3.2 MB in all for planning and executing a 4096^2 pair). */
+#define FFTW_HEADROOM(nx, ny) (((size_t)16 << 20) + 64 * ((nx) + (ny)) * \
+	sizeof(fftw_complex))
+
 int
 rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err)
 {
 	struct timespec t0, t1;
 	unsigned flags = effort == RC_FFT_MEASURE ? FFTW_MEASURE : FFTW_ESTIMATE;
+	void *probe;
 
 	memset(f, 0, sizeof(*f));
 	if (nx > (size_t)INT32_MAX || ny > (size_t)INT32_MAX)
@@ -49,6 +56,16 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers)",
 		    (nx * ny + 2 * f->nxc * ny) * sizeof(double));
 	}
+	/* FFTW aborts when one of its own allocations (plans, twiddle factors,
+	 * buffers: a few MB for a 4096^2 grid) fails: fail cleanly here instead
+	 * when not even that much is left. */
+	if ((probe = malloc(FFTW_HEADROOM(nx, ny))) == NULL) {
+		rc_fft_free(f);
+		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers "
+		    "and %zu bytes of FFTW workspace)", (nx * ny + 2 * (nx / 2 + 1) * ny) *
+		    sizeof(double), FFTW_HEADROOM(nx, ny));
+	}
+	free(probe);
 	clock_gettime(CLOCK_MONOTONIC, &t0);
 	f->forward = fftw_plan_dft_r2c_2d((int)ny, (int)nx, f->real, f->spec, flags);
 	f->backward = fftw_plan_dft_c2r_2d((int)ny, (int)nx, f->spec, f->real, flags);

@@ -12,7 +12,7 @@ set title "a_r at p* = 0.05, H = 0.8: error vs cost (labels: eps_c = dx/lambda_s
 ests = "raw yastrebov_0.118 yastrebov_0.11 richardson_pair yastrebov_mod_pair"
 # Pareto front: points no other point beats in both time and error
 # (computed by an awk pass over both tables).
-front = sprintf("< awk -F'\\t' 'FNR>1 && FILENAME ~ /table/ {print $3\"\\t\"$4} FNR>1 && FILENAME ~ /tolerance/ {print $4\"\\t\"$7}' %s %s | sort -g -k1,1 | awk -F'\\t' 'NR==1 || $2 < best {print; best = $2}'", table, tolerance)
+front = sprintf("< awk -F'\\t' 'FNR>1 && FILENAME ~ /table/ {print $3\"\\t\"$4} FNR>1 && FILENAME ~ /tolerance/ {print $4\"\\t\"$7}' %s %s | sort -g -k1,1 -k2,2 | awk -F'\\t' 'NR==1 || $2 < best {print; best = $2}'", table, tolerance)
 plot for [e in ests] sprintf("< awk -F'\\t' '$1 == \"%s\"' %s | sort -g -k3,3", e, table) \
 	using 3:4 with linespoints title e, \
      for [e in ests] sprintf("< awk -F'\\t' '$1 == \"%s\"' %s", e, table) \
