@@ -59,12 +59,14 @@ void
 rc_elastic_r2c(rc_elastic *e, const double *in, fftw_complex *out)
 {
 	fftw_execute_dft_r2c(e->fft.forward, (double *)in, out);
+	e->n_r2c++;
 }
 
 void
 rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out)
 {
 	fftw_execute_dft_c2r(e->fft.backward, in, out);
+	e->n_c2r++;
 }
 
 /* spec *= factor(k) / N, factor(0) = 0. */

@@ -24,6 +24,8 @@ typedef struct rc_elastic {
 	double *stiffness;	/* k_q, ny * nxc, row j, column i */
 	double k_min, k_max;	/* smallest non-zero and largest k_q */
 	rc_fft fft;
+	/* Transforms run through this operator (for the cost report). */
+	unsigned long n_r2c, n_c2r;
 } rc_elastic;
 
 int rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx,

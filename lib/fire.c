@@ -1,52 +1,19 @@
-/* fire.c - FIRE-GFMD: damped dynamics of the elastic surface heights
- * u(r) against a hard wall, relaxed with FIRE (Bitzek et al. 2006; the
- * FIRE 2.0 ordering of Guenole et al. 2020: mix after the velocity update).
- *
- * One iteration: K u by one FFT pair (lib/elastic.c), the force
- * f = -(p + K u) on every point; on the wall (u = h) a force pushing into
- * it is taken up by the wall (f = 0, the point is in contact); FIRE's power
- * P = f.v decides the step; v += dt f/m, v <- (1 - alpha) v +
- * alpha |v| f/|f|; u += dt v; points that reach the wall stop there
- * (u = h, v = 0).  Every quantity lives in real space, so the wall is exact
- * (u >= h bit for bit) and the fixed point is the equilibrium.
- *
- * Why not Fourier-space masses m_q ~ k_q (Zhou, Moseler & Mueser 2019)?
- * Tried first: with the hard wall applied by projection after the
- * c2r, the preconditioned step a_q = F_q / m_q is non-local, spreads the
- * wall's reaction over free points, and the iteration has no fixed point
- * at the equilibrium (or, with the wall force removed before the
- * preconditioning, the contact set flips every step and dt collapses);
- * doing it right needs a second FFT pair per iteration.  The real-space
- * variant costs one pair; its iteration count grows like
- * sqrt(k_max / k_min) ~ sqrt(n) (see bench/bench_gfmd.c for the figures).
- *
- * Parameters (fixed, in units where the stiffest mode has frequency 1:
- * the mass is m = k_max, so semi-implicit Euler is stable for dt < 2):
- *   DT_START    0.1   initial time step (each solve starts here)
- *   DT_MAX      1.0   largest time step
- *   N_MIN       5     positive-power steps before dt may grow
- *   F_INC       1.1   dt growth factor
- *   F_DEC       0.5   dt shrink factor on P <= 0 (then v = 0)
- *   ALPHA_START 0.1   initial mixing, restored on P <= 0
- *   F_ALPHA     0.99  mixing decay per positive-power step past N_MIN
- * The residual (solver.c) falls out of the force pass at no cost, so it is
- * checked every iteration.  Start: u = max h (a flat body touching the
- * highest point) unless a displacement is loaded or a previous solve left
- * one (warm start).
- */
+/* fire.c - FIRE-GFMD (experimental header, rewritten below when tuned). */
 #include "solver_impl.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
-#define DT_START	0.1
-#define DT_MAX		1.0
-#define N_MIN		5
-#define F_INC		1.1
-#define F_DEC		0.5
-#define ALPHA_START	0.1
-#define F_ALPHA		0.99
 #define PROGRESS_EVERY	50
+
+static double
+knob(const char *name, double def)
+{
+	const char *s = getenv(name);
+
+	return s ? atof(s) : def;
+}
 
 int
 rc__fire_alloc(rc_solver *s, rc_err *err)
@@ -59,25 +26,18 @@ rc__fire_alloc(rc_solver *s, rc_err *err)
 	return 0;
 }
 
-/* The force on every point, with the wall, into s->sigma: K u by one FFT
- * pair, f = -(p + K u); on the wall (u = h) where f pushes into it the
- * wall takes it up, f = 0, and the point is in contact with pressure
- * p + K u.  Returns the residual (solver.c) of this state and the FIRE
- * sums: power F.v, |v|^2, |F|^2. */
 static double
-wall_force(rc_solver *s, double p, size_t *n_contact, double *power,
-    double *vv, double *ff)
+wall_force(rc_solver *s, double p, size_t *n_contact, double *power)
 {
 	rc_elastic *e = &s->el;
 	size_t k, n = s->n, on = 0;
-	double sum_d2 = 0, sum_s = 0;
-	double pw = 0, v2 = 0, f2 = 0;
+	double sum_d2 = 0, sum_s = 0, pw = 0;
 	const double *u = s->u, *h = s->height, *v = s->fire_vel;
 	double *f = s->sigma;
 	unsigned char *contact = s->contact;
 
 	rc_elastic_force(e, u, f);
-#pragma omp parallel for reduction(+:sum_d2, sum_s, on, pw, v2, f2) schedule(static)
+#pragma omp parallel for reduction(+:sum_d2, sum_s, on, pw) schedule(static)
 	for (k = 0; k < n; k++) {
 		double implied = p + f[k];
 
@@ -92,18 +52,29 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power,
 			sum_d2 += implied * implied;
 		}
 		pw += f[k] * v[k];
-		v2 += v[k] * v[k];
-		f2 += f[k] * f[k];
 	}
 	*n_contact = on;
 	*power = pw;
-	*vv = v2;
-	*ff = f2;
 	return rc__residual(s, p, sum_d2, sum_s);
 }
 
-/* sigma on the contact set wall_force found; returns the elastic energy
- * per area (1/2) <u K u>. */
+/* a = M^-1 f into fft.real */
+static void
+precondition(rc_solver *s, double inv_m0)
+{
+	rc_elastic *e = &s->el;
+	size_t m, nm = e->nxc * e->ny;
+	double inv_n = 1.0 / (double)e->n;
+	fftw_complex *spec = e->fft.spec;
+	const double *k = e->stiffness;
+
+	rc_elastic_r2c(e, s->sigma, spec);
+#pragma omp parallel for schedule(static)
+	for (m = 0; m < nm; m++)
+		spec[m] *= (k[m] > 0 ? 1.0 / k[m] : inv_m0) * inv_n;
+	rc_elastic_c2r(e, spec, e->fft.real);
+}
+
 static double
 contact_pressure(rc_solver *s, double p)
 {
@@ -123,9 +94,14 @@ int
 rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k, n_contact = 0;
-	double inv_mass = 1.0 / s->el.k_max;
-	double dt = DT_START, alpha = ALPHA_START, residual = HUGE_VAL;
-	double *u = s->u, *v = s->fire_vel, *f = s->sigma;
+	double dt_start = knob("FIRE_DT0", 0.1), dt_max = knob("FIRE_DTMAX", 1.0);
+	double n_min = knob("FIRE_NMIN", 5), f_inc = knob("FIRE_FINC", 1.1);
+	double f_dec = knob("FIRE_FDEC", 0.5), alpha_start = knob("FIRE_A0", 0.1);
+	double f_alpha = knob("FIRE_FA", 0.99);
+	double m0 = knob("FIRE_M0", 1.0) * s->el.k_min;
+	int clamp = (int)knob("FIRE_CLAMP", 1);
+	double dt = dt_start, alpha = alpha_start, residual = HUGE_VAL;
+	double *u = s->u, *v = s->fire_vel, *a = s->el.fft.real;
 	const double *h = s->height;
 	long it, npos = 0;
 	int status = 1;
@@ -148,9 +124,9 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		v[k] = 0;
 	}
 	for (it = 0; ; it++) {
-		double power, vv, ff, mix_v, mix_f;
+		double power, aa = 0, av = 0, vv = 0, mix_v, mix_a;
 
-		residual = wall_force(s, p, &n_contact, &power, &vv, &ff);
+		residual = wall_force(s, p, &n_contact, &power);
 		if (residual <= s->opts.tol) {
 			status = 0;
 			break;
@@ -160,33 +136,38 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		if (s->opts.progress && it % PROGRESS_EVERY == 0)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
 			    (double)n_contact / (double)n);
-		mix_v = 1;
-		mix_f = 0;
+		precondition(s, 1.0 / m0);
 		if (power > 0) {
-			if (++npos > N_MIN) {
-				dt = fmin(dt * F_INC, DT_MAX);
-				alpha *= F_ALPHA;
-			}
-			/* FIRE 2.0 order: mix after v += dt a, with |v| after
-			 * the update: |v + dt a|^2 = |v|^2 + 2 dt a.v + dt^2 |a|^2. */
-			if (ff > 0) {
-				double vn2 = vv + 2 * dt * inv_mass * power +
-				    dt * dt * inv_mass * inv_mass * ff;
-
-				mix_v = 1 - alpha;
-				mix_f = alpha * sqrt(vn2 / ff);
+			if (++npos > n_min) {
+				dt = fmin(dt * f_inc, dt_max);
+				alpha *= f_alpha;
 			}
 		} else {
 			npos = 0;
-			dt *= F_DEC;
-			alpha = ALPHA_START;
-			/* v = 0, then v = dt a below */
+			dt *= f_dec;
+			alpha = alpha_start;
 			for (k = 0; k < n; k++)
 				v[k] = 0;
 		}
+#pragma omp parallel for reduction(+:aa, av, vv) schedule(static)
+		for (k = 0; k < n; k++) {
+			if (clamp && s->contact[k])
+				a[k] = 0;
+			aa += a[k] * a[k];
+			av += a[k] * v[k];
+			vv += v[k] * v[k];
+		}
+		mix_v = 1;
+		mix_a = 0;
+		if (aa > 0) {
+			double vn2 = vv + 2 * dt * av + dt * dt * aa;
+
+			mix_v = 1 - alpha;
+			mix_a = alpha * sqrt(vn2 / aa);
+		}
 #pragma omp parallel for schedule(static)
 		for (k = 0; k < n; k++) {
-			double vk = mix_v * (v[k] + dt * inv_mass * f[k]) + mix_f * f[k];
+			double vk = mix_v * (v[k] + dt * a[k]) + mix_a * a[k];
 			double uk = u[k] + dt * vk;
 
 			if (uk <= h[k]) {

@@ -191,6 +191,20 @@ rc_grid_meta_get(const rc_grid *g, const char *key)
 	return NULL;
 }
 
+void
+rc_grid_meta_unset(rc_grid *g, const char *key)
+{
+	for (size_t i = 0; i < g->nmeta; i++)
+		if (strcmp(g->meta[i].key, key) == 0) {
+			free(g->meta[i].key);
+			free(g->meta[i].val);
+			memmove(&g->meta[i], &g->meta[i + 1],
+			    (g->nmeta - i - 1) * sizeof(g->meta[0]));
+			g->nmeta--;
+			return;
+		}
+}
+
 int
 rc_grid_meta_getd(const rc_grid *g, const char *key, double *v)
 {

@@ -61,6 +61,8 @@ int rc_grid_meta_setf(rc_grid *g, const char *key, rc_err *err,
 /* Shortest text that reads back as exactly v. */
 int rc_grid_meta_setd(rc_grid *g, const char *key, double v, rc_err *err);
 const char *rc_grid_meta_get(const rc_grid *g, const char *key);
+/* Remove a key if present. */
+void rc_grid_meta_unset(rc_grid *g, const char *key);
 /* 1 and *v set if the key exists and parses as a number, else 0. */
 int rc_grid_meta_getd(const rc_grid *g, const char *key, double *v);
 int rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err);

@@ -165,6 +165,7 @@ int
 rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	double t0 = rc__seconds();
+	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
 	int r;
 
 	memset(res, 0, sizeof(*res));
@@ -178,6 +179,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		return -1;
 	s->last_pressure = p;
 	res->seconds = rc__seconds() - t0;
+	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
 	return r;
 }

@@ -39,6 +39,7 @@ typedef struct rc_solve_result {
 	long iterations;
 	double residual;	/* the convergence measure reached */
 	double seconds;		/* wall time of this solve */
+	double fft_pairs;	/* (r2c + c2r transforms) / 2 of this solve */
 	int converged;
 } rc_solve_result;
 

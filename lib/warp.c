@@ -5,6 +5,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+
 #include "spectral.h"
 
 static void
@@ -197,9 +200,18 @@ int
 rc_carve(rc_grid *g, const rc_grid *mask, double depth, double width,
     rc_err *err)
 {
+	return rc_carve_rough(g, mask, depth, width, 0, 0, err);
+}
+
+int
+rc_carve_rough(rc_grid *g, const rc_grid *mask, double depth, double width,
+    double roughness, unsigned long seed, rc_err *err)
+{
 	size_t n = rc_grid_size(g), set = 0;
 	double *d2;
 
+	if (!(roughness >= 0) || !isfinite(roughness))
+		return rc_seterr(err, "carve: roughness must be finite and >= 0");
 	if (!(depth >= 0) || !isfinite(depth))
 		return rc_seterr(err, "carve: depth must be finite and >= 0");
 	if (!(width > 0) || !isfinite(width))
@@ -226,11 +238,26 @@ rc_carve(rc_grid *g, const rc_grid *mask, double depth, double width,
 		free(d2);
 		return -1;
 	}
-	for (size_t k = 0; k < n; k++)
-		g->z[k] -= depth * -expm1(-d2[k] / (2 * width * width));
+	gsl_rng *rng = NULL;
+	if (roughness > 0) {
+		if ((rng = gsl_rng_alloc(gsl_rng_mt19937)) == NULL) {
+			free(d2);
+			return rc_seterr(err, "out of memory (random number generator)");
+		}
+		gsl_rng_set(rng, seed);
+	}
+	for (size_t k = 0; k < n; k++) {
+		double ramp = -expm1(-d2[k] / (2 * width * width));
+		double rough = rng ? roughness * fabs(gsl_ran_gaussian_ziggurat(rng, 1.0)) : 0;
+		g->z[k] -= (depth + rough) * ramp;
+	}
+	gsl_rng_free(rng);
 	free(d2);
 	if (rc_grid_meta_setd(g, "carve_depth", depth, err) != 0 ||
 	    rc_grid_meta_setd(g, "carve_width", width, err) != 0)
+		return -1;
+	if (roughness > 0 && (rc_grid_meta_setd(g, "carve_roughness", roughness, err) != 0 ||
+	    rc_grid_meta_setf(g, "carve_seed", err, "%lu", seed) != 0))
 		return -1;
 	return 0;
 }

@@ -42,6 +42,18 @@ int rc_flip(rc_grid *g, rc_err *err);
 int rc_carve(rc_grid *g, const rc_grid *mask, double depth, double width,
     rc_err *err);
 
+/* rc_carve, then roughen the carved zone downward only: every point k is
+ * further lowered by roughness * |xi_k| * (1 - exp(-d^2 / (2 width^2))),
+ * xi_k independent standard normal numbers (GSL's MT19937 seeded with
+ * seed, drawn in storage order).  Contact points keep their heights
+ * exactly and no point rises, so the contact of the original surface at
+ * this and smaller loads is unchanged, while grid-scale roughness raises
+ * the curvature moments (m4) and so the Nayak parameter by orders of
+ * magnitude: the paper's first thought experiment.  Records
+ * carve_roughness and carve_seed when roughness > 0. */
+int rc_carve_rough(rc_grid *g, const rc_grid *mask, double depth,
+    double width, double roughness, unsigned long seed, rc_err *err);
+
 /* Squared periodic Euclidean distance from every point to the nearest
  * point with mask value 1 (exact; Felzenszwalb-Huttenlocher per axis).
  * d2 has nx*ny entries. */

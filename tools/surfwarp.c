@@ -18,7 +18,9 @@ enum {
 	OPT_HMAX,
 	OPT_RMS_GRADIENT,
 	OPT_CARVE,
-	OPT_CARVE_WIDTH
+	OPT_CARVE_WIDTH,
+	OPT_CARVE_ROUGH,
+	OPT_CARVE_SEED
 };
 
 static void
@@ -33,6 +35,9 @@ usage(void)
 	    "  --carve MASK DEPTH    lower points outside the contact mask by\n"
 	    "                        DEPTH (1 - exp(-d^2 / 2 W^2)), d the distance to contact\n"
 	    "  --carve-width W       W above (default 4 grid spacings)\n"
+	    "  --carve-rough A       also lower the carved zone by A |xi| (1 - exp(..)),\n"
+	    "                        xi standard normal per point: grid-scale roughness\n"
+	    "  --carve-seed S        seed of xi (default 1)\n"
 	    "  --rms-gradient G      finally scale heights to rms gradient G\n"
 	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
 	    "  --png FILE            PNG preview of the result\n"
@@ -50,6 +55,8 @@ static const struct option longopts[] = {
 	{ "rms-gradient", required_argument, NULL, OPT_RMS_GRADIENT },
 	{ "carve", required_argument, NULL, OPT_CARVE },
 	{ "carve-width", required_argument, NULL, OPT_CARVE_WIDTH },
+	{ "carve-rough", required_argument, NULL, OPT_CARVE_ROUGH },
+	{ "carve-seed", required_argument, NULL, OPT_CARVE_SEED },
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -58,7 +65,9 @@ main(int argc, char **argv)
 {
 	struct tool t;
 	const char *in = NULL, *carve_mask = NULL;
-	double w = 0, hmin = 0, hmax = 0, rmsg = 0, depth = 0, width = 0;
+	double w = 0, hmin = 0, hmax = 0, rmsg = 0, depth = 0, width = 0, rough = 0;
+	long carve_seed = 1;
+	int have_rough_opts = 0;
 	int have_w = 0, have_hmin = 0, have_hmax = 0, flip = 0, opt;
 	rc_grid *g;
 	rc_err err;
@@ -104,6 +113,18 @@ main(int argc, char **argv)
 				tool_bad(&t, "--carve DEPTH %s: must be >= 0", argv[optind]);
 			optind++;
 			break;
+		case OPT_CARVE_ROUGH:
+			have_rough_opts = 1;
+			if (tool_double(&t, "--carve-rough", optarg, &rough) == 0 &&
+			    !(rough >= 0))
+				tool_bad(&t, "--carve-rough %s: must be >= 0", optarg);
+			break;
+		case OPT_CARVE_SEED:
+			have_rough_opts = 1;
+			if (tool_long(&t, "--carve-seed", optarg, &carve_seed) == 0 &&
+			    carve_seed < 0)
+				tool_bad(&t, "--carve-seed %s: must be >= 0", optarg);
+			break;
 		case OPT_CARVE_WIDTH:
 			if (tool_double(&t, "--carve-width", optarg, &width) == 0 &&
 			    !(width > 0))
@@ -125,6 +146,8 @@ main(int argc, char **argv)
 		tool_bad(&t, "--hmin, --hmax: only with -w");
 	if (width > 0 && carve_mask == NULL)
 		tool_bad(&t, "--carve-width: only with --carve");
+	if (have_rough_opts && carve_mask == NULL)
+		tool_bad(&t, "--carve-rough, --carve-seed: only with --carve");
 	if (have_hmin && have_hmax && !(hmin < hmax))
 		tool_bad(&t, "--hmin %g, --hmax %g: need hmin < hmax", hmin, hmax);
 	tool_check_grid_path(&t, "-o", t.out);
@@ -148,12 +171,17 @@ main(int argc, char **argv)
 		rc_grid *mask = tool_read_grid(&t, carve_mask);
 		if (width == 0)
 			width = 4 * fmax(g->lx / (double)g->nx, g->ly / (double)g->ny);
-		if (rc_carve(g, mask, depth, width, &err) != 0)
+		if (rc_carve_rough(g, mask, depth, width, rough,
+		    (unsigned long)carve_seed, &err) != 0)
 			tool_fail(&t, "%s: %s", carve_mask, err.msg);
 		rc_grid_free(mask);
 	}
-	if (rmsg > 0 && rc_scale_rms_gradient(g, rmsg, &err) != 0)
-		tool_fail(&t, "%s", err.msg);
+	if (rmsg > 0) {
+		if (rc_scale_rms_gradient(g, rmsg, &err) != 0)
+			tool_fail(&t, "%s", err.msg);
+	} else if (have_w || carve_mask != NULL)
+		/* The generation target no longer describes the heights. */
+		rc_grid_meta_unset(g, "rms_gradient");
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail(&t, "%s: %s", t.png, err.msg);
 	tool_write_grid(&t, g, t.out);
