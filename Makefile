@@ -41,6 +41,8 @@ BENCH_SRC = $(wildcard bench/bench_*.c)
 BENCHES  = $(BENCH_SRC:bench/%.c=$(O)/bench/%)
 
 .PHONY: all check demo bench install uninstall clean deps accuracy
+# Keep objects: they are intermediate files of the pattern rules.
+.SECONDARY:
 all: $(TOOLS)
 
 $(O)/%.o: %.c

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdio.h>
 
 #define PROGRESS_EVERY	50
 
@@ -137,6 +138,8 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
 			    (double)n_contact / (double)n);
 		precondition(s, 1.0 / m0);
+		if (getenv("FIRE_DBG"))
+			fprintf(stderr, "it %ld res %.3e dt %.3f alpha %.3f P %+.2e nc %zu\n", it, residual, dt, alpha, power, n_contact);
 		if (power > 0) {
 			if (++npos > n_min) {
 				dt = fmin(dt * f_inc, dt_max);

@@ -220,6 +220,13 @@ token:
 				v = p;
 				cap = ncap;
 			}
+			/* A side longer than any grid may have ends the read now,
+			 * not when memory runs out (an endless pipe of "1\n"). */
+			if (inrow >= RC_GRID_MAX_DIM) {
+				rc_seterr(err, "line %zu: more than %u values in a row",
+				    lineno, RC_GRID_MAX_DIM);
+				goto fail;
+			}
 			v[nv++] = d;
 			inrow++;
 			tlen = 0;
@@ -237,6 +244,10 @@ token:
 				} else if (inrow != nx) {
 					rc_seterr(err, "line %zu has %zu values, line %zu has %zu",
 					    lineno, inrow, first_line, nx);
+					goto fail;
+				} else if (rows >= RC_GRID_MAX_DIM) {
+					rc_seterr(err, "line %zu: more than %u rows", lineno,
+					    RC_GRID_MAX_DIM);
 					goto fail;
 				}
 				rows++;

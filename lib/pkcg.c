@@ -91,6 +91,24 @@ final_check(rc_solver *s, double p)
 	return rc__residual(s, p, sum_d2, sum_s);
 }
 
+/* Self-compliance of one point, G_00 = (1/N) sum_{q != 0} 1/k_q: the lift
+ * of a point (against the mean) under a unit pressure on it alone. */
+static double
+self_compliance(const rc_elastic *e)
+{
+	size_t i, j;
+	double sum = 0;
+
+	for (j = 0; j < e->ny; j++)
+		for (i = 0; i < e->nxc; i++) {
+			double k = e->stiffness[j * e->nxc + i];
+
+			if (k > 0)
+				sum += rc_fft_weight(i, e->nx) / k;
+		}
+	return sum / (double)e->n;
+}
+
 /* Initial pressure: the previous solution rescaled, the pressure a loaded
  * displacement implies, or uniform. */
 static void
@@ -131,6 +149,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	double *r = e->fft.real;
 	const double *h = s->height;
 	double g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
+	double compliance = 0;	/* G_00, computed when first needed */
 	double pn = p * (double)n, inv_n = 1.0 / (double)n;
 	long it, since_refresh = 0;
 	int stale = 1, conjugate = 0, status = 1;
@@ -140,7 +159,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	memset(t, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double gsum = 0, pen = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
-		double sum_t = 0, sum_s = 0, tau, beta, rbar, f;
+		double sum_t = 0, sum_s = 0, tau, tau_in, beta, rbar, f;
 		size_t reentered = 0, clipped = 0;
 
 		if (stale || since_refresh >= REFRESH_EVERY) {
@@ -200,6 +219,19 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			tau = 0;
 		else
 			tau = sum_gt / (sum_rt - rbar * sum_t);
+		/* The re-entry pressure -tau g needs tau > 0.  With the gap zero
+		 * on the whole contact set (one contact point, or a warm start
+		 * from a solution at a lower load) there is no step and tau = 0,
+		 * so penetrating points would never re-enter and the solve would
+		 * stall at the old contact set.  Then let each re-enter with the
+		 * pressure that alone closes its gap, -g / G_00. */
+		if (tau > 0)
+			tau_in = tau;
+		else {
+			if (!(compliance > 0))
+				compliance = self_compliance(e);
+			tau_in = 1 / compliance;
+		}
 #pragma omp parallel for reduction(+:sum_s, reentered, clipped) schedule(static)
 		for (k = 0; k < n; k++) {
 			double g = disp[k] + c - h[k];
@@ -211,7 +243,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 					clipped++;
 				}
 			} else if (g < 0) {
-				sigma[k] = -tau * g;
+				sigma[k] = -tau_in * g;
 				reentered++;
 			}
 			disp[k] -= tau * r[k];

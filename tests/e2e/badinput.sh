@@ -170,6 +170,10 @@ expect_fail1 "gfmd-solve --init of another size" "$D/small.surf" gfmd-solve -q -
 expect_fail1 "surfwarp, empty stdin" "standard input" surfwarp -q -o out.surf
 expect_fail1 "surfstat, empty stdin" "standard input" surfstat -q -o out.tsv
 expect_fail1 "gfmd-solve, empty stdin" "standard input" gfmd-solve -q -j 1 -p 0.1 -o out.tsv
+# An endless text stream stops at the longest side a grid may have
+# (16777216 rows or values in a row), not when memory runs out.
+expect_fail1 "surfstat < endless rows" "standard input" sh -c 'yes 1 | surfstat -q -o out.tsv'
+expect_fail1 "surfwarp < endless row" "standard input" sh -c 'yes 1 | tr "\n" " " | surfwarp -q -o out.surf'
 # Unreadable: chmod 000 does not stop root, so only where it takes effect.
 cp "$G" "$D/unreadable.surf"; chmod 000 "$D/unreadable.surf"
 if cat "$D/unreadable.surf" >/dev/null 2>&1; then
@@ -184,6 +188,55 @@ check_status "surfstat reads the good .npy" 0 surfstat -q -o "$W/ok.tsv" "$D/goo
 check_status "surfstat reads the good .gsf" 0 surfstat -q -o "$W/ok.tsv" "$D/good.gsf"
 check_status "surfstat reads the good .txt" 0 surfstat -q -o "$W/ok.tsv" "$D/good.txt"
 check_status "surfstat --mask reads the good mask" 0 surfstat -q --mask "$D/mask.surf" -o "$W/ok.tsv" "$G"
+
+# --- out of memory ---------------------------------------------------------
+# With the address space limited to 200 MB, a grid of 8192^2 (512 MB) cannot
+# be made or read, and a 4096^2 grid (128 MB) can be read but not
+# transformed: a one-line "out of memory" with the size asked for, exit 1,
+# outputs intact.  The inputs are sparse files of zeros (no disk, fast).
+# AddressSanitizer reserves terabytes of address space: under SANITIZE=1
+# the tools cannot start with a limit at all, so these cases are skipped.
+expect_oom() {
+	d=$1 lim=$2; shift 2
+	n_bad=$((n_bad + 1))
+	fresh_work
+	(cd "$W" && ulimit -v "$lim" && "$@") >"$T_TMP/stdout" 2>"$T_TMP/stderr" </dev/null
+	st=$?
+	why=""
+	[ "$st" = 1 ] || why="$why exit $st (want 1);"
+	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines (want 1);"
+	grep -q 'out of memory (asked for [0-9][0-9]* bytes' "$T_TMP/stderr" || why="$why no 'out of memory (asked for N bytes';"
+	for f in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	done
+	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
+	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
+}
+sparse_surf() {	# sparse_surf N FILE: an N x N grid of zeros
+	printf '#surf 1\nnx = %d\nny = %d\nlx = 1\nly = 1\nkind = height\nencoding = float64-le\nend_header\n' \
+	    "$1" "$1" >"$2"
+	truncate -s "$(($(wc -c <"$2") + $1 * $1 * 8))" "$2"
+}
+if (ulimit -v 200000 && surfgen -q -n 4 -o /dev/null; r=$?; exit $r) >/dev/null 2>&1 &&
+    command -v truncate >/dev/null; then
+	sparse_surf 8192 "$D/big8192.surf"
+	sparse_surf 4096 "$D/big4096.surf"
+	expect_oom "surfgen -n 8192 in 200 MB" 200000 surfgen -q -n 8192 -o out.surf
+	expect_oom "surfgen -n 4096 in 200 MB (FFT)" 200000 surfgen -q -n 4096 -o out.surf
+	expect_oom "surfwarp reading 8192^2 in 200 MB" 200000 surfwarp -q -w 1 -o out.surf "$D/big8192.surf"
+	expect_oom "surfstat reading 8192^2 in 200 MB" 200000 surfstat -q -o out.tsv "$D/big8192.surf"
+	expect_oom "gfmd-solve reading 8192^2 in 200 MB" 200000 gfmd-solve -q --pressure-abs 0.1 --gap gap.surf -o out.tsv "$D/big8192.surf"
+	expect_oom "surfstat --mask 8192^2 in 200 MB" 200000 surfstat -q --mask "$D/big8192.surf" -o out.tsv "$G"
+	expect_oom "gfmd-solve --init 8192^2 in 200 MB" 200000 gfmd-solve -q -p 0.1 --init "$D/big8192.surf" -o out.tsv "$G"
+	expect_oom "surfwarp 8192^2 from a pipe in 200 MB" 200000 sh -c "head -c 300000000 '$D/big8192.surf' | surfwarp -q -o out.surf"
+	expect_oom "surfstat 4096^2 in 200 MB (FFT)" 200000 surfstat -q -o out.tsv "$D/big4096.surf"
+	expect_oom "surfstat --psd 4096^2 in 300 MB" 300000 surfstat -q --psd -o out.tsv "$D/big4096.surf"
+	expect_oom "gfmd-solve 4096^2 in 300 MB" 300000 gfmd-solve -q --pressure-abs 0.1 --gap gap.surf -o out.tsv "$D/big4096.surf"
+	expect_oom "gfmd-solve --method cg 4096^2 in 300 MB" 300000 gfmd-solve -q --method cg --pressure-abs 0.1 --gap gap.surf -o out.tsv "$D/big4096.surf"
+	rm -f "$D/big8192.surf" "$D/big4096.surf"
+else
+	echo "note: tools cannot run with ulimit -v (sanitizer build?): out-of-memory cases skipped"
+fi
 
 # --- options ---------------------------------------------------------------
 # expect_usage DESC NPROBLEMS CMD...: exit 2, NPROBLEMS problem lines, then

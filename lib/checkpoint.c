@@ -1,0 +1,558 @@
+/* checkpoint.c - write, read and check the checkpoint of a list of
+ * contact solves (see checkpoint.h for the format). */
+#include "checkpoint.h"
+
+#include <errno.h>
+#include <inttypes.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+
+#define VERSION 1
+#define FNV_OFFSET 14695981039346656037ULL
+#define FNV_PRIME 1099511628211ULL
+
+static uint64_t
+fnv_u64(uint64_t h, uint64_t v)
+{
+	for (int b = 0; b < 8; b++) {
+		h ^= (v >> (8 * b)) & 0xff;
+		h *= FNV_PRIME;
+	}
+	return h;
+}
+
+static uint64_t
+fnv_double(uint64_t h, double d)
+{
+	uint64_t v;
+
+	memcpy(&v, &d, sizeof(v));
+	return fnv_u64(h, v);
+}
+
+uint64_t
+rc_checkpoint_hash(const rc_grid *g)
+{
+	uint64_t h = FNV_OFFSET;
+	size_t k, n = rc_grid_size(g);
+
+	h = fnv_u64(h, g->nx);
+	h = fnv_u64(h, g->ny);
+	h = fnv_double(h, g->lx);
+	h = fnv_double(h, g->ly);
+	for (k = 0; k < n; k++)
+		h = fnv_double(h, g->z[k]);
+	return h;
+}
+
+int
+rc_checkpoint_init(rc_checkpoint *c, const rc_grid *g, const double *p,
+    size_t np, rc_err *err)
+{
+	memset(c, 0, sizeof(*c));
+	c->nx = g->nx;
+	c->ny = g->ny;
+	c->lx = g->lx;
+	c->ly = g->ly;
+	c->input_sum = rc_checkpoint_hash(g);
+	if (np == 0)
+		return rc_seterr(err, "checkpoint: empty pressure list");
+	if ((c->pressures = rc_malloc(np * sizeof(double), err)) == NULL)
+		return -1;
+	memcpy(c->pressures, p, np * sizeof(double));
+	c->npressures = np;
+	return 0;
+}
+
+void
+rc_checkpoint_free(rc_checkpoint *c)
+{
+	free(c->pressures);
+	free(c->columns);
+	free(c->types);
+	for (size_t k = 0; k < c->nrows; k++)
+		free(c->rows[k]);
+	free(c->rows);
+	memset(c, 0, sizeof(*c));
+}
+
+/* A growing string. */
+struct buf {
+	char *s;
+	size_t len, cap;
+	int bad;
+};
+
+static void
+put(struct buf *b, const char *s, size_t n)
+{
+	if (b->bad)
+		return;
+	if (b->len + n + 1 > b->cap) {
+		size_t cap = b->cap ? b->cap : 256;
+		char *t;
+
+		while (b->len + n + 1 > cap)
+			cap *= 2;
+		if ((t = realloc(b->s, cap)) == NULL) {
+			b->bad = 1;
+			return;
+		}
+		b->s = t;
+		b->cap = cap;
+	}
+	memcpy(b->s + b->len, s, n);
+	b->len += n;
+	b->s[b->len] = '\0';
+}
+
+static void
+puts_escaped(struct buf *b, const char *s)
+{
+	for (; *s; s++)
+		switch (*s) {
+		case '\\':
+			put(b, "\\\\", 2);
+			break;
+		case '\t':
+			put(b, "\\t", 2);
+			break;
+		case ' ':
+			put(b, "\\s", 2);
+			break;
+		default:
+			put(b, s, 1);
+		}
+}
+
+static char *
+finish(struct buf *b, rc_err *err)
+{
+	if (b->bad || b->s == NULL) {
+		free(b->s);
+		rc_seterr(err, "checkpoint: out of memory");
+		return NULL;
+	}
+	return b->s;
+}
+
+int
+rc_checkpoint_add_row(rc_checkpoint *c, const rc_row *r, rc_err *err)
+{
+	struct buf cols = { 0 }, vals = { 0 };
+	char *line, **rows;
+	size_t i;
+
+	for (i = 0; i < r->n; i++) {
+		if (i) {
+			put(&cols, "\t", 1);
+			put(&vals, "\t", 1);
+		}
+		put(&cols, r->name[i], strlen(r->name[i]));
+		puts_escaped(&vals, r->val[i]);
+	}
+	if ((line = finish(&vals, err)) == NULL) {
+		free(cols.s);
+		return -1;
+	}
+	if (c->columns == NULL) {
+		if ((c->columns = finish(&cols, err)) == NULL ||
+		    (c->types = malloc(r->n + 1)) == NULL) {
+			free(line);
+			return rc_seterr(err, "checkpoint: out of memory");
+		}
+		for (i = 0; i < r->n; i++)
+			c->types[i] = r->is_str[i] ? 's' : 'n';
+		c->types[r->n] = '\0';
+	} else {
+		int same = !cols.bad && cols.s != NULL &&
+		    strcmp(cols.s, c->columns) == 0;
+
+		free(cols.s);
+		if (!same) {
+			free(line);
+			return rc_seterr(err, "checkpoint: row %zu has other columns "
+			    "than the first", c->nrows);
+		}
+	}
+	if ((rows = realloc(c->rows, (c->nrows + 1) * sizeof(*rows))) == NULL) {
+		free(line);
+		return rc_seterr(err, "checkpoint: out of memory");
+	}
+	c->rows = rows;
+	c->rows[c->nrows++] = line;
+	return 0;
+}
+
+/* Next tab-separated field of *s (NULL at the end), unescaped in place. */
+static char *
+field(char **s, int unescape)
+{
+	char *f = *s, *w, *r;
+
+	if (f == NULL)
+		return NULL;
+	if ((r = strchr(f, '\t')) != NULL) {
+		*r = '\0';
+		*s = r + 1;
+	} else
+		*s = NULL;
+	if (unescape)
+		for (w = r = f; *r; r++) {
+			if (*r == '\\' && r[1] != '\0') {
+				r++;
+				*w++ = *r == 't' ? '\t' : *r == 's' ? ' ' : *r;
+			} else
+				*w++ = *r;
+		}
+	else
+		w = f + strlen(f);
+	*w = '\0';
+	return f;
+}
+
+int
+rc_checkpoint_row(const rc_checkpoint *c, size_t k, rc_row *row, rc_err *err)
+{
+	char *names, *vals, *np, *vp, *name, *val;
+	size_t i = 0;
+	int status = 0;
+
+	if (k >= c->nrows)
+		return rc_seterr(err, "checkpoint: no row %zu", k);
+	names = strdup(c->columns);
+	vals = strdup(c->rows[k]);
+	if (names == NULL || vals == NULL) {
+		free(names);
+		free(vals);
+		return rc_seterr(err, "checkpoint: out of memory");
+	}
+	rc_row_clear(row);
+	np = names;
+	vp = vals;
+	while ((name = field(&np, 0)) != NULL) {
+		char *end;
+		double v;
+
+		if ((val = field(&vp, 1)) == NULL || c->types[i] == '\0') {
+			status = rc_seterr(err, "checkpoint: row %zu has fewer values "
+			    "than columns", k);
+			break;
+		}
+		if (c->types[i] == 's')
+			status = rc_row_str(row, name, val);
+		else {
+			errno = 0;
+			v = strtod(val, &end);
+			if (end == val || *end != '\0') {
+				status = rc_seterr(err, "checkpoint: row %zu, column %s: "
+				    "'%s' is not a number", k, name, val);
+				break;
+			}
+			status = rc_row_num(row, name, v);
+		}
+		if (status != 0) {
+			status = rc_seterr(err, "checkpoint: out of memory");
+			break;
+		}
+		i++;
+	}
+	if (status == 0 && (vp != NULL || c->types[i] != '\0'))
+		status = rc_seterr(err, "checkpoint: row %zu does not match its "
+		    "columns", k);
+	free(names);
+	free(vals);
+	return status;
+}
+
+static int
+setd(rc_grid *g, const char *key, double v, rc_err *err)
+{
+	return rc_grid_meta_setd(g, key, v, err);
+}
+
+int
+rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
+    rc_err *err)
+{
+	struct buf list = { 0 };
+	char key[64], num[64], *s;
+	rc_grid *g;
+	int r = -1;
+
+	if ((g = rc_grid_new(c->nx, c->ny, c->lx, c->ly, err)) == NULL)
+		return -1;
+	g->kind = RC_KIND_DISPLACEMENT;
+	memcpy(g->z, u, c->nx * c->ny * sizeof(double));
+	for (size_t k = 0; k < c->npressures; k++) {
+		rc_format_double(num, sizeof(num), c->pressures[k]);
+		if (k)
+			put(&list, ",", 1);
+		put(&list, num, strlen(num));
+	}
+	if ((s = finish(&list, err)) == NULL)
+		goto out;
+	if (rc_grid_meta_setf(g, "checkpoint.version", err, "%d", VERSION) ||
+	    rc_grid_meta_setf(g, "checkpoint.input_sum", err, "%016" PRIx64,
+	    c->input_sum) ||
+	    rc_grid_meta_set(g, "checkpoint.method", c->method, err) ||
+	    setd(g, "checkpoint.tol", c->tol, err) ||
+	    setd(g, "checkpoint.E", c->modulus, err) ||
+	    setd(g, "checkpoint.alpha", c->alpha, err) ||
+	    rc_grid_meta_setf(g, "checkpoint.fd", err, "%d", c->fd != 0) ||
+	    rc_grid_meta_setf(g, "checkpoint.max_iter", err, "%ld", c->max_iter) ||
+	    rc_grid_meta_set(g, "checkpoint.pressure_kind",
+	    c->reduced ? "reduced" : "absolute", err) ||
+	    rc_grid_meta_set(g, "checkpoint.pressures", s, err) ||
+	    rc_grid_meta_setf(g, "checkpoint.next", err, "%zu", c->next) ||
+	    rc_grid_meta_set(g, "checkpoint.state",
+	    c->solving ? "solving" : "between", err) ||
+	    rc_grid_meta_setf(g, "checkpoint.iterations", err, "%ld",
+	    c->iterations)) {
+		free(s);
+		goto out;
+	}
+	free(s);
+	if (c->nrows > 0 &&
+	    (rc_grid_meta_set(g, "checkpoint.columns", c->columns, err) ||
+	    rc_grid_meta_set(g, "checkpoint.types", c->types, err)))
+		goto out;
+	for (size_t k = 0; k < c->nrows; k++) {
+		snprintf(key, sizeof(key), "checkpoint.row.%zu", k);
+		if (rc_grid_meta_set(g, key, c->rows[k], err) != 0)
+			goto out;
+	}
+	r = rc_grid_write(g, path, RC_FMT_SURF, err);
+out:
+	rc_grid_free(g);
+	return r;
+}
+
+static const char *
+need(const rc_grid *g, const char *key, rc_err *err)
+{
+	const char *v = rc_grid_meta_get(g, key);
+
+	if (v == NULL)
+		rc_seterr(err, "not a gfmd-solve checkpoint (no meta.%s)", key);
+	return v;
+}
+
+static int
+need_double(const rc_grid *g, const char *key, double *v, rc_err *err)
+{
+	if (need(g, key, err) == NULL)
+		return -1;
+	if (!rc_grid_meta_getd(g, key, v))
+		return rc_seterr(err, "meta.%s: not a number", key);
+	return 0;
+}
+
+static int
+need_long(const rc_grid *g, const char *key, long lo, long *v, rc_err *err)
+{
+	const char *s = need(g, key, err);
+	char *end;
+
+	if (s == NULL)
+		return -1;
+	errno = 0;
+	*v = strtol(s, &end, 10);
+	if (end == s || *end != '\0' || errno != 0 || *v < lo)
+		return rc_seterr(err, "meta.%s = %s: want an integer of at least %ld",
+		    key, s, lo);
+	return 0;
+}
+
+static int
+parse_list(rc_checkpoint *c, const char *s, rc_err *err)
+{
+	size_t n = 1;
+	const char *q;
+
+	for (q = s; *q; q++)
+		n += *q == ',';
+	if ((c->pressures = rc_malloc(n * sizeof(double), err)) == NULL)
+		return -1;
+	for (q = s; c->npressures < n; ) {
+		char *end;
+		double v = strtod(q, &end);
+
+		if (end == q || (*end != ',' && *end != '\0') || !(v > 0) ||
+		    !isfinite(v))
+			return rc_seterr(err, "meta.checkpoint.pressures: bad list "
+			    "'%s'", s);
+		c->pressures[c->npressures++] = v;
+		q = *end ? end + 1 : end;
+	}
+	return 0;
+}
+
+int
+rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
+    rc_err *err)
+{
+	rc_grid *g;
+	const char *s;
+	char key[64], *end;
+	long v;
+
+	memset(c, 0, sizeof(*c));
+	*up = NULL;
+	if ((g = rc_grid_read(path, NULL, err)) == NULL)
+		return -1;
+	c->nx = g->nx;
+	c->ny = g->ny;
+	c->lx = g->lx;
+	c->ly = g->ly;
+	if (need_long(g, "checkpoint.version", 0, &v, err) != 0)
+		goto bad;
+	if (v != VERSION) {
+		rc_seterr(err, "checkpoint version %ld, this program reads %d", v,
+		    VERSION);
+		goto bad;
+	}
+	if ((s = need(g, "checkpoint.input_sum", err)) == NULL)
+		goto bad;
+	errno = 0;
+	c->input_sum = strtoull(s, &end, 16);
+	if (strlen(s) != 16 || *end != '\0' || errno != 0) {
+		rc_seterr(err, "meta.checkpoint.input_sum = %s: want 16 hex digits", s);
+		goto bad;
+	}
+	if ((s = need(g, "checkpoint.method", err)) == NULL)
+		goto bad;
+	if (strlen(s) >= sizeof(c->method)) {
+		rc_seterr(err, "meta.checkpoint.method = %s: unknown", s);
+		goto bad;
+	}
+	strcpy(c->method, s);
+	if (need_double(g, "checkpoint.tol", &c->tol, err) ||
+	    need_double(g, "checkpoint.E", &c->modulus, err) ||
+	    need_double(g, "checkpoint.alpha", &c->alpha, err) ||
+	    need_long(g, "checkpoint.fd", 0, &v, err))
+		goto bad;
+	c->fd = v != 0;
+	if (need_long(g, "checkpoint.max_iter", 1, &c->max_iter, err) ||
+	    (s = need(g, "checkpoint.pressure_kind", err)) == NULL)
+		goto bad;
+	if (strcmp(s, "reduced") != 0 && strcmp(s, "absolute") != 0) {
+		rc_seterr(err, "meta.checkpoint.pressure_kind = %s: want reduced "
+		    "or absolute", s);
+		goto bad;
+	}
+	c->reduced = strcmp(s, "reduced") == 0;
+	if ((s = need(g, "checkpoint.pressures", err)) == NULL ||
+	    parse_list(c, s, err) != 0 ||
+	    need_long(g, "checkpoint.next", 0, &v, err) != 0)
+		goto bad;
+	if ((size_t)v > c->npressures) {
+		rc_seterr(err, "meta.checkpoint.next = %ld: the list has %zu "
+		    "pressures", v, c->npressures);
+		goto bad;
+	}
+	c->next = (size_t)v;
+	if ((s = need(g, "checkpoint.state", err)) == NULL)
+		goto bad;
+	if (strcmp(s, "solving") != 0 && strcmp(s, "between") != 0) {
+		rc_seterr(err, "meta.checkpoint.state = %s: want solving or between", s);
+		goto bad;
+	}
+	c->solving = strcmp(s, "solving") == 0;
+	if (need_long(g, "checkpoint.iterations", 0, &c->iterations, err) != 0)
+		goto bad;
+	if (c->next > 0) {
+		const char *cols, *types;
+		size_t ncols = 1;
+
+		if ((cols = need(g, "checkpoint.columns", err)) == NULL ||
+		    (types = need(g, "checkpoint.types", err)) == NULL)
+			goto bad;
+		for (s = cols; *s; s++)
+			ncols += *s == '\t';
+		if (strlen(types) != ncols || strspn(types, "ns") != ncols) {
+			rc_seterr(err, "meta.checkpoint.types: want one n or s for "
+			    "each of the %zu columns", ncols);
+			goto bad;
+		}
+		if ((c->columns = strdup(cols)) == NULL ||
+		    (c->types = strdup(types)) == NULL ||
+		    (c->rows = calloc(c->next, sizeof(*c->rows))) == NULL) {
+			rc_seterr(err, "out of memory");
+			goto bad;
+		}
+		for (size_t k = 0; k < c->next; k++) {
+			snprintf(key, sizeof(key), "checkpoint.row.%zu", k);
+			if ((s = need(g, key, err)) == NULL)
+				goto bad;
+			if ((c->rows[k] = strdup(s)) == NULL) {
+				rc_seterr(err, "out of memory");
+				goto bad;
+			}
+			c->nrows++;
+		}
+	}
+	*up = g;
+	return 0;
+bad:
+	rc_grid_free(g);
+	rc_checkpoint_free(c);
+	return -1;
+}
+
+/* Same bits, so that 0.1 written and read back compares equal. */
+static int
+same(double a, double b)
+{
+	return memcmp(&a, &b, sizeof(a)) == 0;
+}
+
+int
+rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
+    rc_err *err)
+{
+	if (s->nx != n->nx || s->ny != n->ny)
+		return rc_seterr(err, "checkpoint is for a %zux%zu grid, the "
+		    "indenter is %zux%zu", s->nx, s->ny, n->nx, n->ny);
+	if (!same(s->lx, n->lx) || !same(s->ly, n->ly))
+		return rc_seterr(err, "checkpoint is for a %gx%g cell, the "
+		    "indenter's is %gx%g", s->lx, s->ly, n->lx, n->ly);
+	if (s->input_sum != n->input_sum)
+		return rc_seterr(err, "checkpoint is for another indenter (heights "
+		    "hash %016" PRIx64 ", this one %016" PRIx64 ")", s->input_sum,
+		    n->input_sum);
+	if (strcmp(s->method, n->method) != 0)
+		return rc_seterr(err, "checkpoint has --method %s, this run %s",
+		    s->method, n->method);
+	if (!same(s->tol, n->tol))
+		return rc_seterr(err, "checkpoint has --tol %.17g, this run %.17g",
+		    s->tol, n->tol);
+	if (!same(s->modulus, n->modulus))
+		return rc_seterr(err, "checkpoint has -E %.17g, this run %.17g",
+		    s->modulus, n->modulus);
+	if (!same(s->alpha, n->alpha))
+		return rc_seterr(err, "checkpoint has --alpha %.17g, this run %.17g",
+		    s->alpha, n->alpha);
+	if (s->fd != n->fd)
+		return rc_seterr(err, "checkpoint was %s --fd, this run %s",
+		    s->fd ? "with" : "without", n->fd ? "has it" : "has not");
+	if (s->max_iter != n->max_iter)
+		return rc_seterr(err, "checkpoint has --max-iter %ld, this run %ld",
+		    s->max_iter, n->max_iter);
+	if (s->reduced != n->reduced)
+		return rc_seterr(err, "checkpoint has %s pressures, this run %s",
+		    s->reduced ? "reduced (-p)" : "absolute (--pressure-abs)",
+		    n->reduced ? "reduced (-p)" : "absolute (--pressure-abs)");
+	if (s->npressures != n->npressures)
+		return rc_seterr(err, "checkpoint has %zu pressures, this run %zu",
+		    s->npressures, n->npressures);
+	for (size_t k = 0; k < s->npressures; k++)
+		if (!same(s->pressures[k], n->pressures[k]))
+			return rc_seterr(err, "pressure %zu: checkpoint has %.17g, "
+			    "this run %.17g", k + 1, s->pressures[k], n->pressures[k]);
+	return 0;
+}

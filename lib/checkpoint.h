@@ -1,0 +1,85 @@
+/* checkpoint.h - the state of an interrupted list of contact solves, so
+ * that a run can resume where it stopped (gfmd-solve --checkpoint,
+ * --resume).
+ *
+ * A checkpoint is a native .surf grid (surf(5)) of the elastic surface
+ * height u of the solve in progress (or of the last finished one), whose
+ * metadata, all under "checkpoint.", say what it belongs to:
+ *   version        1
+ *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly and
+ *                  the bit patterns of its heights), 16 hex digits
+ *   method, tol, E, alpha, fd, max_iter   the options that decide the rows
+ *   pressure_kind  reduced (-p) or absolute (--pressure-abs)
+ *   pressures      the full list, comma-separated, exact to the last bit
+ *   next           index (0-based) of the first pressure without a row
+ *   state          solving (u is a partial solve of pressures[next]) or
+ *                  between (u is the solution of pressures[next - 1])
+ *   iterations     iterations already spent on pressures[next]
+ *   columns, types the result columns (tab-separated) and, per column,
+ *                  n (number) or s (string)
+ *   row.K          the finished row K, K < next, values tab-separated with
+ *                  '\', tab and space escaped as \\, \t, \s
+ * Nothing else is needed to resume: rows already finished are re-emitted
+ * from the checkpoint, and u warm-starts the interrupted pressure.
+ */
+#ifndef RC_CHECKPOINT_H
+#define RC_CHECKPOINT_H
+
+#include <stdint.h>
+#include "grid.h"
+#include "rc_err.h"
+#include "table.h"
+
+typedef struct rc_checkpoint {
+	/* identity of the problem */
+	size_t nx, ny;
+	double lx, ly;
+	uint64_t input_sum;
+	/* options that decide the results */
+	char method[16];
+	double tol, modulus, alpha;
+	long max_iter;
+	int fd;
+	int reduced;		/* 1: pressures are p*, 0: absolute p */
+	double *pressures;
+	size_t npressures;
+	/* progress */
+	size_t next;
+	int solving;		/* 1: u is a partial solve of pressures[next] */
+	long iterations;
+	/* finished rows, serialised (row.K values) */
+	char *columns, *types;
+	char **rows;
+	size_t nrows;
+} rc_checkpoint;
+
+/* FNV-1a over nx, ny, lx, ly and every height's bit pattern (byte order
+ * fixed, little-endian), so the same indenter gives the same hash anywhere. */
+uint64_t rc_checkpoint_hash(const rc_grid *indenter);
+
+/* Fill identity from the indenter and copy the pressure list; rows empty. */
+int rc_checkpoint_init(rc_checkpoint *c, const rc_grid *indenter,
+    const double *pressures, size_t npressures, rc_err *err);
+void rc_checkpoint_free(rc_checkpoint *c);
+
+/* Append a finished row (the first fixes columns and types). */
+int rc_checkpoint_add_row(rc_checkpoint *c, const rc_row *row, rc_err *err);
+/* Rebuild finished row k into row (cleared first). */
+int rc_checkpoint_row(const rc_checkpoint *c, size_t k, rc_row *row,
+    rc_err *err);
+
+/* Write atomically as .surf (whatever the name's extension) with u, an
+ * nx*ny field. */
+int rc_checkpoint_write(const rc_checkpoint *c, const double *u,
+    const char *path, rc_err *err);
+/* Read a checkpoint; *u receives its displacement grid (caller frees). */
+int rc_checkpoint_read(rc_checkpoint *c, rc_grid **u, const char *path,
+    rc_err *err);
+
+/* 0 if saved belongs to the same indenter and options as now (pressure
+ * list, method, tol, E, alpha, fd, max_iter), else -1 naming the first
+ * difference. */
+int rc_checkpoint_match(const rc_checkpoint *saved, const rc_checkpoint *now,
+    rc_err *err);
+
+#endif
