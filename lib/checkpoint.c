@@ -529,13 +529,13 @@ rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
 		return rc_seterr(err, "checkpoint has --method %s, this run %s",
 		    s->method, n->method);
 	if (!same(s->tol, n->tol))
-		return rc_seterr(err, "checkpoint has --tol %.17g, this run %.17g",
+		return rc_seterr(err, "checkpoint has --tol %.16g, this run %.16g",
 		    s->tol, n->tol);
 	if (!same(s->modulus, n->modulus))
-		return rc_seterr(err, "checkpoint has -E %.17g, this run %.17g",
+		return rc_seterr(err, "checkpoint has -E %.16g, this run %.16g",
 		    s->modulus, n->modulus);
 	if (!same(s->alpha, n->alpha))
-		return rc_seterr(err, "checkpoint has --alpha %.17g, this run %.17g",
+		return rc_seterr(err, "checkpoint has --alpha %.16g, this run %.16g",
 		    s->alpha, n->alpha);
 	if (s->fd != n->fd)
 		return rc_seterr(err, "checkpoint was %s --fd, this run %s",
@@ -552,7 +552,7 @@ rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
 		    s->npressures, n->npressures);
 	for (size_t k = 0; k < s->npressures; k++)
 		if (!same(s->pressures[k], n->pressures[k]))
-			return rc_seterr(err, "pressure %zu: checkpoint has %.17g, "
-			    "this run %.17g", k + 1, s->pressures[k], n->pressures[k]);
+			return rc_seterr(err, "pressure %zu: checkpoint has %.16g, "
+			    "this run %.16g", k + 1, s->pressures[k], n->pressures[k]);
 	return 0;
 }

@@ -95,9 +95,9 @@ int
 rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k, n_contact = 0;
-	double dt_start = knob("FIRE_DT0", 0.1), dt_max = knob("FIRE_DTMAX", 1.0);
-	double n_min = knob("FIRE_NMIN", 5), f_inc = knob("FIRE_FINC", 1.1);
-	double f_dec = knob("FIRE_FDEC", 0.5), alpha_start = knob("FIRE_A0", 0.1);
+	double dt_start = knob("FIRE_DT0", 1.0), dt_max = knob("FIRE_DTMAX", 2.0);
+	double n_min = knob("FIRE_NMIN", 1), f_inc = knob("FIRE_FINC", 1.1);
+	double f_dec = knob("FIRE_FDEC", 0.85), alpha_start = knob("FIRE_A0", 0.5);
 	double f_alpha = knob("FIRE_FA", 0.99);
 	double m0 = knob("FIRE_M0", 1.0) * s->el.k_min;
 	int clamp = (int)knob("FIRE_CLAMP", 1);
@@ -137,6 +137,8 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		if (s->opts.progress && it % PROGRESS_EVERY == 0)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
 			    (double)n_contact / (double)n);
+		if (knob("FIRE_ADAPT", 0) > 0)
+			m0 = knob("FIRE_ADAPT", 0) * s->el.k_min * sqrt(fmax((double)n_contact, knob("FIRE_FLOOR", 1)) / (double)n);
 		precondition(s, 1.0 / m0);
 		if (getenv("FIRE_DBG"))
 			fprintf(stderr, "it %ld res %.3e dt %.3f alpha %.3f P %+.2e nc %zu\n", it, residual, dt, alpha, power, n_contact);

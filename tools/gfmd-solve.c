@@ -7,9 +7,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include "atomic.h"
+#include "checkpoint.h"
 #include "common.h"
 #include "contact.h"
 #include "fft.h"
@@ -29,18 +31,99 @@ enum {
 	OPT_GAP,
 	OPT_PRESSURE_FIELD,
 	OPT_DISPLACEMENT,
-	OPT_FD
+	OPT_FD,
+	OPT_CHECKPOINT,
+	OPT_CHECKPOINT_EVERY,
+	OPT_RESUME
 };
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;
 static volatile sig_atomic_t stop_flag;
 
+/* Set by SIGALRM every --checkpoint-every minutes: the solve stops, the
+ * checkpoint is written and the same pressure goes on. */
+static volatile sig_atomic_t checkpoint_due;
+
 static void
 on_signal(int sig)
 {
 	stop_signal = sig;
 	stop_flag = 1;
+}
+
+static void
+on_alarm(int sig)
+{
+	(void)sig;
+	checkpoint_due = 1;
+	stop_flag = 1;
+}
+
+static void
+arm_timer(double minutes)
+{
+	struct itimerval it;
+	double sec = minutes * 60;
+
+	memset(&it, 0, sizeof(it));
+	it.it_value.tv_sec = (time_t)sec;
+	it.it_value.tv_usec = (suseconds_t)((sec - (double)(time_t)sec) * 1e6);
+	if (it.it_value.tv_sec == 0 && it.it_value.tv_usec == 0)
+		it.it_value.tv_usec = 1;
+	setitimer(ITIMER_REAL, &it, NULL);
+}
+
+/* The command that resumes this run: the same arguments without --init
+ * or an earlier --resume, plus --resume PATH. */
+static char *
+resume_command(int argc, char **argv, const char *path)
+{
+	size_t len = 4 * strlen(path) + 32;
+	char *cmd, *w;
+	int i;
+
+	for (i = 0; i < argc; i++)
+		len += 4 * strlen(argv[i]) + 4;	/* ' -> '\'' at worst */
+	if ((cmd = malloc(len)) == NULL)
+		return NULL;
+	w = cmd;
+	for (i = 0; i <= argc; i++) {
+		const char *a = i < argc ? argv[i] : "--resume";
+
+		if (i == 0)
+			a = "gfmd-solve";
+		if (i > 0 && i < argc && (strcmp(a, "--init") == 0 ||
+		    strcmp(a, "--resume") == 0)) {
+			i++;
+			continue;
+		}
+		if (i > 0 && i < argc && (strncmp(a, "--init=", 7) == 0 ||
+		    strncmp(a, "--resume=", 9) == 0))
+			continue;
+		for (int twice = 0; twice < (i == argc ? 2 : 1); twice++) {
+			int quote;
+
+			if (twice)
+				a = path;
+			quote = a[0] == '\0' || strpbrk(a, " \t'\"\\$`*?[]();&|<>~#!") != NULL;
+			if (w != cmd)
+				*w++ = ' ';
+			if (quote)
+				*w++ = '\'';
+			for (; *a; a++) {
+				if (quote && *a == '\'') {
+					memcpy(w, "'\\''", 4);
+					w += 4;
+				} else
+					*w++ = *a;
+			}
+			if (quote)
+				*w++ = '\'';
+		}
+	}
+	*w = '\0';
+	return cmd;
 }
 
 struct progress {
@@ -67,7 +150,9 @@ usage(void)
 "usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...]) [-E MODULUS]\n"
 "           [--method fire|cg] [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
-"           [--displacement FILE] [--png FILE] [-o FILE] [--json] [-j N] [-q]\n"
+"           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
+"           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json]\n"
+"           [-j N] [-q]\n"
 "           [-L LX[xLY]] [FILE]\n"
 "Solve the frictionless contact of an elastic half space (above) on the\n"
 "rigid indenter in FILE (or standard input) and write one row per pressure.\n"
@@ -87,6 +172,12 @@ usage(void)
 "  --pressure FILE      contact pressure of the last pressure\n"
 "  --displacement FILE  elastic surface height u of the last pressure\n"
 "  --png FILE           contact map over the height map\n"
+"  --checkpoint FILE    on SIGINT/SIGTERM, after each finished pressure and\n"
+"                       every --checkpoint-every minutes, save the state to\n"
+"                       FILE (.surf); removed when the run completes\n"
+"  --checkpoint-every MIN  also save it every MIN minutes during a solve\n"
+"  --resume FILE        continue the run saved in FILE (same indenter; the\n"
+"                       pressures and solver options default to FILE's)\n"
 "  -o FILE              result table (default standard output)\n"
 "  --json               JSON instead of TSV\n"
 "  -j N                 threads (default all cores)\n"
@@ -140,6 +231,9 @@ main(int argc, char **argv)
 		{ "pressure", required_argument, NULL, OPT_PRESSURE_FIELD },
 		{ "displacement", required_argument, NULL, OPT_DISPLACEMENT },
 		{ "fd", no_argument, NULL, OPT_FD },
+		{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
+		{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY },
+		{ "resume", required_argument, NULL, OPT_RESUME },
 		{ "json", no_argument, NULL, OPT_JSON },
 		{ "png", required_argument, NULL, OPT_PNG },
 		{ "version", no_argument, NULL, OPT_VERSION },
@@ -164,8 +258,15 @@ main(int argc, char **argv)
 	size_t npressures = 0, nreduced = 0, nabsolute = 0, nunconverged = 0;
 	const char *init = NULL, *contact_path = NULL, *gap_path = NULL;
 	const char *pressure_path = NULL, *displacement_path = NULL, *input;
-	long n;
+	const char *ck_path = NULL, *resume_path = NULL;
+	double ck_every = 0;
+	rc_checkpoint ck, saved;
+	rc_grid *saved_u = NULL;
+	size_t first = 0;
+	long n, resumed_iterations = 0;
 	int c, method, fd = 0, status = 0;
+	int given_method = 0, given_tol = 0, given_e = 0, given_alpha = 0;
+	int given_fd = 0, given_max_iter = 0;
 
 	tool_init(&t, "gfmd-solve", argc, argv);
 	rc_solver_defaults(&so);
@@ -187,17 +288,20 @@ main(int argc, char **argv)
 		case 'E':
 			if (tool_double(&t, "-E", optarg, &modulus) == 0 && !(modulus > 0))
 				tool_bad(&t, "-E %s: the contact modulus must be positive", optarg);
+			given_e = 1;
 			break;
 		case OPT_METHOD:
 			if ((method = rc_method_parse(optarg)) < 0)
 				tool_bad(&t, "--method %s: want fire or cg", optarg);
 			else
 				so.method = (enum rc_method)method;
+			given_method = 1;
 			break;
 		case OPT_TOL:
 			if (tool_double(&t, "--tol", optarg, &so.tol) == 0 &&
 			    !(so.tol > 0 && so.tol < 1))
 				tool_bad(&t, "--tol %s: want a tolerance in (0, 1)", optarg);
+			given_tol = 1;
 			break;
 		case OPT_MAX_ITER:
 			if (tool_long(&t, "--max-iter", optarg, &n) == 0) {
@@ -206,11 +310,13 @@ main(int argc, char **argv)
 				else
 					so.max_iter = n;
 			}
+			given_max_iter = 1;
 			break;
 		case OPT_ALPHA:
 			if (tool_double(&t, "--alpha", optarg, &alpha) == 0 &&
 			    !(alpha >= 0 && alpha <= 1))
 				tool_bad(&t, "--alpha %s: want a weight in [0, 1]", optarg);
+			given_alpha = 1;
 			break;
 		case OPT_INIT:
 			init = optarg;
@@ -229,6 +335,19 @@ main(int argc, char **argv)
 			break;
 		case OPT_FD:
 			fd = 1;
+			given_fd = 1;
+			break;
+		case OPT_CHECKPOINT:
+			ck_path = optarg;
+			break;
+		case OPT_CHECKPOINT_EVERY:
+			if (tool_double(&t, "--checkpoint-every", optarg, &ck_every) == 0 &&
+			    !(ck_every > 0 && ck_every <= 1e6))
+				tool_bad(&t, "--checkpoint-every %s: want minutes in (0, 1e6]",
+				    optarg);
+			break;
+		case OPT_RESUME:
+			resume_path = optarg;
 			break;
 		case 'h':
 			usage();
@@ -251,8 +370,15 @@ main(int argc, char **argv)
 	}
 	if (nreduced && nabsolute)
 		tool_bad(&t, "-p and --pressure-abs: give one of them, not both");
-	else if (!nreduced && !nabsolute && t.nbad == 0)
+	else if (!nreduced && !nabsolute && t.nbad == 0 && resume_path == NULL)
 		tool_bad(&t, "no pressure: give -p P[,P...] or --pressure-abs P[,P...]");
+	if (ck_every > 0 && ck_path == NULL)
+		tool_bad(&t, "--checkpoint-every: needs --checkpoint FILE");
+	if (ck_path != NULL && rc_is_stdio(ck_path))
+		tool_bad(&t, "--checkpoint -: give a file name");
+	if (resume_path != NULL && init != NULL)
+		tool_bad(&t, "--resume and --init: the checkpoint is the start; "
+		    "give one of them");
 	if (argc - optind > 1)
 		tool_bad(&t, "%s: one input file at most", argv[optind + 1]);
 	{
@@ -276,6 +402,59 @@ main(int argc, char **argv)
 
 	rc_fft_set_threads(t.threads);
 	h = tool_read_grid(&t, input);
+	if (resume_path != NULL) {
+		/* Options that decide the rows default to the checkpoint's;
+		 * those given must match it (rc_checkpoint_match below). */
+		if (rc_checkpoint_read(&saved, &saved_u, resume_path, &err) != 0)
+			tool_fail(&t, "%s: %s", resume_path, err.msg);
+		if (!given_method && (method = rc_method_parse(saved.method)) >= 0)
+			so.method = (enum rc_method)method;
+		if (!given_tol)
+			so.tol = saved.tol;
+		if (!given_e)
+			modulus = saved.modulus;
+		if (!given_alpha)
+			alpha = saved.alpha;
+		if (!given_fd)
+			fd = saved.fd;
+		if (!given_max_iter)
+			so.max_iter = saved.max_iter;
+		if (!nreduced && !nabsolute) {
+			double *copy = malloc(saved.npressures * sizeof(double));
+
+			if (copy == NULL)
+				tool_fail(&t, "out of memory");
+			memcpy(copy, saved.pressures, saved.npressures * sizeof(double));
+			if (saved.reduced) {
+				reduced = copy;
+				nreduced = saved.npressures;
+			} else {
+				absolute = copy;
+				nabsolute = saved.npressures;
+			}
+			npressures = saved.npressures;
+		}
+	}
+	if (ck_path != NULL || resume_path != NULL) {
+		if (rc_checkpoint_init(&ck, h, nreduced ? reduced : absolute,
+		    npressures, &err) != 0)
+			tool_fail(&t, "%s", err.msg);
+		snprintf(ck.method, sizeof(ck.method), "%s", rc_method_name(so.method));
+		ck.tol = so.tol;
+		ck.modulus = modulus;
+		ck.alpha = alpha;
+		ck.fd = fd;
+		ck.max_iter = so.max_iter;
+		ck.reduced = nreduced != 0;
+	}
+	if (resume_path != NULL) {
+		if (rc_checkpoint_match(&saved, &ck, &err) != 0)
+			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+		if (saved_u->nx != h->nx || saved_u->ny != h->ny)
+			tool_fail(&t, "--resume %s: %zux%zu field, the indenter is "
+			    "%zux%zu", resume_path, saved_u->nx, saved_u->ny, h->nx,
+			    h->ny);
+	}
 	/* The analysis plan lives as long as the solver; --fd needs none. */
 	memset(&fft, 0, sizeof(fft));
 	if (fd)
@@ -307,6 +486,14 @@ main(int argc, char **argv)
 			tool_fail(&t, "%s: %s", init, err.msg);
 		rc_grid_free(u);
 	}
+	if (resume_path != NULL) {
+		if (rc_solver_set_displacement(solver, saved_u->z, &err) != 0)
+			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+		rc_grid_free(saved_u);
+		first = saved.next;
+		if (saved.solving)
+			resumed_iterations = saved.iterations;
+	}
 
 	memset(&sa, 0, sizeof(sa));
 	sa.sa_handler = on_signal;
@@ -325,34 +512,104 @@ main(int argc, char **argv)
 	co.gbar = gbar;
 	co.fft = fd ? NULL : &fft;
 	co.fd = fd;
-	for (size_t k = 0; k < npressures; k++) {
+	/* A resumed run first repeats the rows its checkpoint finished. */
+	for (size_t k = 0; k < first; k++) {
+		if (rc_checkpoint_row(&saved, k, &row, &err) != 0 ||
+		    (ck_path != NULL && rc_checkpoint_add_row(&ck, &row, &err) != 0)) {
+			rc_atomic_abort(&out);
+			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+		}
+		if (rc_table_write(&table, &row, &err) != 0) {
+			rc_atomic_abort(&out);
+			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+		}
+	}
+	if (resume_path != NULL && first >= npressures) {
+		rc_atomic_abort(&out);
+		tool_fail(&t, "--resume %s: every pressure of it is done; nothing "
+		    "to resume", resume_path);
+	}
+	if (ck_every > 0) {
+		struct sigaction alarm_sa;
+
+		memset(&alarm_sa, 0, sizeof(alarm_sa));
+		alarm_sa.sa_handler = on_alarm;
+		alarm_sa.sa_flags = SA_RESTART;
+		sigemptyset(&alarm_sa.sa_mask);
+		sigaction(SIGALRM, &alarm_sa, NULL);
+		arm_timer(ck_every);
+	}
+	for (size_t k = first; k < npressures; k++) {
 		rc_solve_result res;
 		rc_contact_stats st;
 		double p = nreduced ? reduced[k] * modulus * gbar : absolute[k];
 		double p_star = gbar > 0 ? p / (modulus * gbar) : NAN;
+		double seconds = 0;
+		long iterations = k == first ? resumed_iterations : 0;
 		int r;
 
 		pr.p = p;
 		pr.p_star = p_star;
-		r = rc_solver_solve(solver, p, &res, &err);
-		if (pr.shown) {
-			fputc('\n', stderr);
-			pr.shown = 0;
-		}
-		if (r < 0) {
-			rc_atomic_abort(&out);
-			tool_fail(&t, "p = %g: %s", p, err.msg);
-		}
-		if (stop_flag) {
-			/* The rows of finished pressures are complete: keep them. */
-			if (k == 0 || rc_table_end(&table, &err) != 0 ||
-			    rc_atomic_commit(&out, &err) != 0)
+		/* A periodic checkpoint stops the solve through so.stop; it is
+		 * saved and the same pressure goes on from where it stopped. */
+		for (;;) {
+			r = rc_solver_solve(solver, p, &res, &err);
+			if (pr.shown) {
+				fputc('\n', stderr);
+				pr.shown = 0;
+			}
+			if (r < 0) {
 				rc_atomic_abort(&out);
-			tool_fail(&t, "interrupted by signal %d while solving p = %g "
-			    "(iteration %ld); the rows of the %zu of %zu pressures done "
-			    "before it are written, no fields", (int)stop_signal, p,
-			    res.iterations, k, npressures);
+				tool_fail(&t, "p = %g: %s", p, err.msg);
+			}
+			iterations += res.iterations;
+			seconds += res.seconds;
+			if (r == 0 || !stop_flag)
+				break;
+			if (ck_path != NULL) {
+				ck.next = k;
+				ck.solving = 1;
+				ck.iterations = iterations;
+				if (rc_checkpoint_write(&ck, rc_solver_displacement(solver),
+				    ck_path, &err) != 0) {
+					if (stop_signal) {
+						rc_atomic_abort(&out);
+						tool_fail(&t, "interrupted by signal %d; the "
+						    "checkpoint %s could not be written: %s",
+						    (int)stop_signal, ck_path, err.msg);
+					}
+					tool_warn(&t, "checkpoint %s: %s; going on", ck_path,
+					    err.msg);
+				}
+			}
+			if (stop_signal) {
+				char *cmd = ck_path ? resume_command(argc, argv, ck_path) : NULL;
+
+				/* The rows of finished pressures are complete: keep them. */
+				if (k == 0 || rc_table_end(&table, &err) != 0 ||
+				    rc_atomic_commit(&out, &err) != 0)
+					rc_atomic_abort(&out);
+				if (ck_path == NULL)
+					tool_fail(&t, "interrupted by signal %d while solving "
+					    "p = %g (iteration %ld); the rows of the %zu of %zu "
+					    "pressures done before it are written, no fields "
+					    "(--checkpoint FILE makes a run resumable)",
+					    (int)stop_signal, p, iterations, k, npressures);
+				tool_fail(&t, "interrupted by signal %d while solving p = %g "
+				    "(pressure %zu of %zu, iteration %ld); state saved in %s; "
+				    "resume with: %s%s", (int)stop_signal, p, k + 1,
+				    npressures, iterations, ck_path, cmd ? cmd : "",
+				    input == NULL || rc_is_stdio(input) ?
+				    " (with the same indenter on standard input)" : "");
+			}
+			checkpoint_due = 0;
+			stop_flag = 0;
+			if (stop_signal)
+				stop_flag = 1;
+			arm_timer(ck_every);
 		}
+		res.iterations = iterations;
+		res.seconds = seconds;
 		co.pressure = p;
 		if (rc_contact_analyse(h, rc_solver_contact(solver), &co, &st,
 		    &err) != 0) {
@@ -406,6 +663,46 @@ main(int argc, char **argv)
 		}
 		last_p = p;
 		last_p_star = p_star;
+		if (ck_path != NULL && k + 1 < npressures) {
+			/* Saved after each finished pressure: a stop from here
+			 * on loses nothing. */
+			ck.next = k + 1;
+			ck.solving = 0;
+			ck.iterations = 0;
+			if (rc_checkpoint_add_row(&ck, &row, &err) != 0 ||
+			    rc_checkpoint_write(&ck, rc_solver_displacement(solver),
+			    ck_path, &err) != 0) {
+				if (stop_signal) {
+					if (rc_table_end(&table, &err) != 0 ||
+					    rc_atomic_commit(&out, &err) != 0)
+						rc_atomic_abort(&out);
+					tool_fail(&t, "interrupted by signal %d after pressure "
+					    "%zu of %zu; the checkpoint %s could not be written: "
+					    "%s", (int)stop_signal, k + 1, npressures, ck_path,
+					    err.msg);
+				}
+				tool_warn(&t, "checkpoint %s: %s; going on", ck_path,
+				    err.msg);
+			}
+			if (stop_signal) {
+				char *cmd = resume_command(argc, argv, ck_path);
+
+				if (rc_table_end(&table, &err) != 0 ||
+				    rc_atomic_commit(&out, &err) != 0)
+					rc_atomic_abort(&out);
+				tool_fail(&t, "interrupted by signal %d after pressure %zu "
+				    "of %zu; state saved in %s; resume with: %s%s",
+				    (int)stop_signal, k + 1, npressures, ck_path,
+				    cmd ? cmd : "", input == NULL || rc_is_stdio(input) ?
+				    " (with the same indenter on standard input)" : "");
+			}
+		}
+	}
+	if (ck_every > 0) {
+		struct itimerval off;
+
+		memset(&off, 0, sizeof(off));
+		setitimer(ITIMER_REAL, &off, NULL);
 	}
 	rc_row_free(&row);
 	sigaction(SIGINT, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
@@ -470,6 +767,13 @@ main(int argc, char **argv)
 		    npressures);
 		status = 1;
 	}
+	/* The run is complete: its checkpoint would only resume it again. */
+	if (ck_path != NULL && unlink(ck_path) != 0 && errno != ENOENT)
+		tool_warn(&t, "%s: %s", ck_path, strerror(errno));
+	if (ck_path != NULL || resume_path != NULL)
+		rc_checkpoint_free(&ck);
+	if (resume_path != NULL)
+		rc_checkpoint_free(&saved);
 	rc_solver_free(solver);
 	rc_grid_free(h);
 	free(reduced);
