@@ -20,8 +20,27 @@
 
 enum rc_fft_effort {
 	RC_FFT_ESTIMATE = 0,	/* instant planning; default for small grids */
-	RC_FFT_MEASURE		/* slower planning, faster transforms */
+	RC_FFT_MEASURE,		/* slower planning, faster transforms */
+	RC_FFT_PATIENT,		/* slower still; rarely worth it but with wisdom */
+	RC_FFT_WISDOM		/* a MEASURE (or better) plan if FFTW's wisdom
+				 * already holds one, else ESTIMATE: never pays
+				 * for planning; for one-shot transforms */
 };
+
+/* Effort policy (times measured on this project's 2-core test machine,
+ * see roughcontact(7)): MEASURE planning of an r2c + c2r pair costs 1 to
+ * 4 s at 512^2 .. 4096^2, i.e. 15 to 200 transform pairs, and gains 0 to
+ * 60% per transform; below 512^2 the transforms take milliseconds and
+ * planning never pays back.  So: ESTIMATE below RC_FFT_MEASURE_POINTS;
+ * above, MEASURE when the caller expects at least RC_FFT_MEASURE_PAIRS
+ * transform pairs (a solver), else RC_FFT_WISDOM (a plan from wisdom, which
+ * costs nothing to make, or ESTIMATE). */
+#define RC_FFT_MEASURE_POINTS ((size_t)512 * 512)
+#define RC_FFT_MEASURE_PAIRS 200.0
+enum rc_fft_effort rc_fft_effort_auto(size_t nx, size_t ny, double pairs);
+/* "estimate", "measure", "patient", "wisdom"; parse returns -1 if unknown. */
+const char *rc_fft_effort_name(enum rc_fft_effort e);
+int rc_fft_effort_parse(const char *name);
 
 typedef struct rc_fft {
 	size_t nx, ny, nxc;
@@ -29,11 +48,31 @@ typedef struct rc_fft {
 	fftw_complex *spec;		/* ny*nxc */
 	fftw_plan forward, backward;
 	double plan_seconds;		/* time spent planning */
+	enum rc_fft_effort effort;	/* the effort the plans were made with
+					 * (RC_FFT_WISDOM resolved) */
 } rc_fft;
 
-/* Set how many threads FFTW (and OpenMP loops) use; n <= 0 means all cores.
- * Call before making plans.  Returns the number in effect. */
+/* Set how many threads FFTW (and OpenMP loops) use; n <= 0 means the
+ * OMP_NUM_THREADS environment variable if it holds a positive number, else
+ * all cores.  Call before making plans.  Returns the number in effect. */
 int rc_fft_set_threads(int n);
+
+/* FFTW's wisdom (plans it has measured) is FFTW's own process-wide state,
+ * not this library's: loading it makes later MEASURE plans of the same
+ * sizes and thread counts instant.  Import: 1 if loaded, 0 if path does
+ * not exist (nothing to load yet), -1 if it cannot be read or is not FFTW
+ * wisdom.  Export writes all wisdom atomically (temporary file + rename),
+ * so concurrent runs sharing one file never see a torn one. */
+int rc_fft_wisdom_import(const char *path, rc_err *err);
+int rc_fft_wisdom_export(const char *path, rc_err *err);
+
+/* An in-place c2r plan of buf, ny rows of nxc = nx/2+1 complex values whose
+ * real output rows are padded to 2 nxc doubles (FFTW's in-place layout).
+ * Makes it before buf is filled (MEASURE overwrites it); *plan_seconds and
+ * *used (either may be NULL) receive the planning time and the effort
+ * used.  NULL if FFTW cannot plan. */
+fftw_plan rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
+    enum rc_fft_effort effort, double *plan_seconds, enum rc_fft_effort *used);
 
 int rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err);
