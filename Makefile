@@ -37,6 +37,9 @@ COMMON_OBJ = $(O)/tools/common.o
 TEST_SRC = $(wildcard tests/test_*.c)
 TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
 TESTLIB_OBJ = $(O)/tests/testlib.o
+MAN1 = $(wildcard man/man1/*.1)
+MAN5 = $(wildcard man/man5/*.5)
+MAN7 = $(wildcard man/man7/*.7)
 BENCH_SRC = $(wildcard bench/bench_*.c)
 BENCHES  = $(BENCH_SRC:bench/%.c=$(O)/bench/%)
 
@@ -66,9 +69,20 @@ $(O)/bench/bench_%: $(O)/bench/bench_%.o $(LIB)
 check: $(TOOLS) $(TESTS)
 	@sh tests/run.sh $(BIN) $(O)/tests
 
+# the hard-case matrix (tests/e2e/hard.sh) on 4x and 8x finer grids; minutes
+.PHONY: check-hard
+check-hard: $(TOOLS)
+	@sh tests/hard/hard-big.sh $(BIN)
+
 bench: $(TOOLS) $(BENCHES)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
-	@for s in bench/*.sh; do [ -f "$$s" ] || continue; echo "== $$s"; RC_BIN=$(BIN) sh $$s || exit 1; done
+	@for s in bench/*.sh; do [ -f "$$s" ] || continue; echo "== $$s"; RC_BIN=$(BIN) RC_BENCH_BIN=$(O)/bench sh $$s || exit 1; done
+
+# peak RSS of a command (bench/bench_memory.sh)
+bench: $(O)/bench/peakrss
+$(O)/bench/peakrss: bench/peakrss.c
+	@mkdir -p $(dir $@)
+	$(CC) $(STD) $(WARN) $(CFLAGS) -o $@ bench/peakrss.c
 
 # accuracy of a_r against wall time (bench/accuracy/README.md)
 accuracy: $(TOOLS)
@@ -81,11 +95,15 @@ install: $(TOOLS)
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
 	    $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
 	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin
-	for s in 1 5 7; do for m in man/man$$s/*.$$s; do [ -f "$$m" ] && \
-	    install -m 644 $$m $(DESTDIR)$(PREFIX)/share/man/man$$s; done; done; true
+	install -m 644 $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 644 $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5
+	install -m 644 $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7
 
 uninstall:
-	for t in $(TOOLS:$(BIN)/%=%); do rm -f $(DESTDIR)$(PREFIX)/bin/$$t; done
+	rm -f $(TOOLS:$(BIN)/%=$(DESTDIR)$(PREFIX)/bin/%) \
+	    $(MAN1:man/%=$(DESTDIR)$(PREFIX)/share/man/%) \
+	    $(MAN5:man/%=$(DESTDIR)$(PREFIX)/share/man/%) \
+	    $(MAN7:man/%=$(DESTDIR)$(PREFIX)/share/man/%)
 
 # Debian packages needed to build and test (what .ci/run installs).
 deps:

@@ -1,20 +1,45 @@
 /* fft.c - FFTW plans, threads, wave numbers. */
 #include "fft.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
+
+#include "atomic.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
+
+/* OMP_NUM_THREADS as OpenMP reads it: a positive number, or a list of
+ * them (nested levels), whose first entry applies here; else 0. */
+static int
+env_threads(void)
+{
+	const char *s = getenv("OMP_NUM_THREADS");
+	char *end;
+	long n;
+
+	if (s == NULL)
+		return 0;
+	errno = 0;
+	n = strtol(s, &end, 10);
+	if (end == s || (*end != '\0' && *end != ',') || errno == ERANGE ||
+	    n < 1 || n > 4096)
+		return 0;
+	return (int)n;
+}
 
 int
 rc_fft_set_threads(int n)
 {
 #ifdef _OPENMP
 	static int initialised;	/* FFTW's own global state: init once */
+	if (n <= 0)
+		n = env_threads();
 	if (n <= 0)
 		n = omp_get_num_procs();
 	if (!initialised) {
@@ -26,8 +51,90 @@ rc_fft_set_threads(int n)
 	return n;
 #else
 	(void)n;
+	(void)env_threads;
 	return 1;
 #endif
+}
+
+static const char *effort_names[] = { "estimate", "measure", "patient", "wisdom" };
+
+const char *
+rc_fft_effort_name(enum rc_fft_effort e)
+{
+	return (unsigned)e < sizeof(effort_names) / sizeof(effort_names[0]) ?
+	    effort_names[e] : "unknown";
+}
+
+int
+rc_fft_effort_parse(const char *name)
+{
+	for (size_t e = 0; e < sizeof(effort_names) / sizeof(effort_names[0]); e++)
+		if (strcmp(name, effort_names[e]) == 0)
+			return (int)e;
+	return -1;
+}
+
+enum rc_fft_effort
+rc_fft_effort_auto(size_t nx, size_t ny, double pairs)
+{
+	if (nx * ny < RC_FFT_MEASURE_POINTS)
+		return RC_FFT_ESTIMATE;
+	return pairs >= RC_FFT_MEASURE_PAIRS ? RC_FFT_MEASURE : RC_FFT_WISDOM;
+}
+
+static unsigned
+effort_flags(enum rc_fft_effort e)
+{
+	switch (e) {
+	case RC_FFT_MEASURE:
+		return FFTW_MEASURE;
+	case RC_FFT_PATIENT:
+		return FFTW_PATIENT;
+	case RC_FFT_WISDOM:
+		return FFTW_MEASURE | FFTW_WISDOM_ONLY;
+	default:
+		return FFTW_ESTIMATE;
+	}
+}
+
+int
+rc_fft_wisdom_import(const char *path, rc_err *err)
+{
+	FILE *fp;
+	int ok;
+
+	if ((fp = fopen(path, "r")) == NULL) {
+		if (errno == ENOENT)
+			return 0;
+		return rc_seterr(err, "%s", strerror(errno));
+	}
+	ok = fftw_import_wisdom_from_file(fp);
+	fclose(fp);
+	if (!ok)
+		return rc_seterr(err, "not FFTW wisdom (or from another FFTW "
+		    "version); remove it or name another file");
+	return 1;
+}
+
+int
+rc_fft_wisdom_export(const char *path, rc_err *err)
+{
+	rc_atomic a;
+
+	if (rc_is_stdio(path))
+		return rc_seterr(err, "wisdom needs a file name, not standard output");
+	if (rc_atomic_open(&a, path, err) != 0)
+		return -1;
+	fftw_export_wisdom_to_file(a.fp);
+	if (ferror(a.fp)) {
+		rc_atomic_abort(&a);
+		return rc_seterr(err, "write error");
+	}
+	if (rc_atomic_commit(&a, err) != 0) {
+		rc_atomic_abort(&a);
+		return -1;
+	}
+	return 0;
 }
 
 /* Room FFTW needs beyond the two buffers, with a wide margin (measured:
@@ -35,12 +142,61 @@ rc_fft_set_threads(int n)
 #define FFTW_HEADROOM(nx, ny) (((size_t)16 << 20) + 64 * ((nx) + (ny)) * \
 	sizeof(fftw_complex))
 
+static double
+seconds_since(const struct timespec *t0)
+{
+	struct timespec t1;
+
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	return (double)(t1.tv_sec - t0->tv_sec) + 1e-9 * (double)(t1.tv_nsec -
+	    t0->tv_nsec);
+}
+
+fftw_plan
+rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
+    enum rc_fft_effort effort, double *plan_seconds, enum rc_fft_effort *used,
+    rc_err *err)
+{
+	struct timespec t0;
+	fftw_plan p;
+	void *probe;
+
+	if (nx > (size_t)INT32_MAX || ny > (size_t)INT32_MAX) {
+		rc_seterr(err, "grid %zux%zu too large for FFTW's int sizes", nx, ny);
+		return NULL;
+	}
+	/* FFTW aborts when its own allocations fail (see rc_fft_init). */
+	if ((probe = malloc(FFTW_HEADROOM(nx, ny))) == NULL) {
+		rc_seterr(err, "out of memory (asked for %zu bytes of FFTW workspace)",
+		    FFTW_HEADROOM(nx, ny));
+		return NULL;
+	}
+	free(probe);
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	p = fftw_plan_dft_c2r_2d((int)ny, (int)nx, buf, (double *)buf,
+	    effort_flags(effort));
+	if (p == NULL && effort == RC_FFT_WISDOM) {
+		effort = RC_FFT_ESTIMATE;
+		p = fftw_plan_dft_c2r_2d((int)ny, (int)nx, buf, (double *)buf,
+		    FFTW_ESTIMATE);
+	} else if (effort == RC_FFT_WISDOM)
+		effort = RC_FFT_MEASURE;
+	if (plan_seconds != NULL)
+		*plan_seconds = seconds_since(&t0);
+	if (used != NULL)
+		*used = effort;
+	if (p == NULL)
+		rc_seterr(err, "FFTW could not plan a %zux%zu transform", nx, ny);
+	return p;
+}
+
+
 int
 rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err)
 {
-	struct timespec t0, t1;
-	unsigned flags = effort == RC_FFT_MEASURE ? FFTW_MEASURE : FFTW_ESTIMATE;
+	struct timespec t0;
+	unsigned flags = effort_flags(effort);
 	void *probe;
 
 	memset(f, 0, sizeof(*f));
@@ -69,8 +225,23 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 	clock_gettime(CLOCK_MONOTONIC, &t0);
 	f->forward = fftw_plan_dft_r2c_2d((int)ny, (int)nx, f->real, f->spec, flags);
 	f->backward = fftw_plan_dft_c2r_2d((int)ny, (int)nx, f->spec, f->real, flags);
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	f->plan_seconds = (t1.tv_sec - t0.tv_sec) + 1e-9 * (t1.tv_nsec - t0.tv_nsec);
+	if (effort == RC_FFT_WISDOM) {
+		effort = RC_FFT_MEASURE;
+		if (f->forward == NULL || f->backward == NULL) {
+			/* Not in the wisdom: the instant plan instead. */
+			if (f->forward)
+				fftw_destroy_plan(f->forward);
+			if (f->backward)
+				fftw_destroy_plan(f->backward);
+			effort = RC_FFT_ESTIMATE;
+			f->forward = fftw_plan_dft_r2c_2d((int)ny, (int)nx, f->real,
+			    f->spec, FFTW_ESTIMATE);
+			f->backward = fftw_plan_dft_c2r_2d((int)ny, (int)nx, f->spec,
+			    f->real, FFTW_ESTIMATE);
+		}
+	}
+	f->effort = effort;
+	f->plan_seconds = seconds_since(&t0);
 	if (f->forward == NULL || f->backward == NULL) {
 		rc_fft_free(f);
 		return rc_seterr(err, "FFTW could not plan a %zux%zu transform", nx, ny);

@@ -70,9 +70,10 @@ int rc_fft_wisdom_export(const char *path, rc_err *err);
  * real output rows are padded to 2 nxc doubles (FFTW's in-place layout).
  * Makes it before buf is filled (MEASURE overwrites it); *plan_seconds and
  * *used (either may be NULL) receive the planning time and the effort
- * used.  NULL if FFTW cannot plan. */
+ * used.  NULL with err set if memory is short or FFTW cannot plan. */
 fftw_plan rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
-    enum rc_fft_effort effort, double *plan_seconds, enum rc_fft_effort *used);
+    enum rc_fft_effort effort, double *plan_seconds, enum rc_fft_effort *used,
+    rc_err *err);
 
 int rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err);

@@ -35,7 +35,7 @@
  * Mean-mode mass m_0.  The mean height is held only by the contact, whose
  * stiffness (load per mean height) grows with the contact.  A single
  * patch of area a_r L^2 in a half space has stiffness ~ E* sqrt(a_r) L per
- * cell, i.e. ~ k_min sqrt(a_r) per area (k_min = pi E*/L, the softest
+ * cell, i.e. ~ k_min sqrt(a_r) per area (k_min = pi E* / L, the softest
  * mode).  So m_0 = M0_SCALE k_min sqrt(max(n_c, 1) / N), updated every
  * step from the current contact count (it changes the rate, not the fixed
  * point).  Measured on 128^2 and 512^2 self-affine surfaces (H = 0.3 and

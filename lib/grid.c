@@ -80,6 +80,25 @@ rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 	return g;
 }
 
+rc_grid *
+rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
+    rc_err *err)
+{
+	rc_grid *g;
+
+	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+		return NULL;
+	if ((g = rc_calloc(1, sizeof(*g), err)) == NULL)
+		return NULL;
+	g->nx = nx;
+	g->ny = ny;
+	g->lx = lx;
+	g->ly = ly;
+	g->kind = RC_KIND_HEIGHT;
+	g->z = z;
+	return g;
+}
+
 void
 rc_grid_free(rc_grid *g)
 {

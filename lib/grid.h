@@ -47,6 +47,11 @@ typedef struct rc_grid {
 /* Allocate a zeroed grid; checks dimensions and overflow. */
 rc_grid *rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err);
 void rc_grid_free(rc_grid *g);
+/* A grid over values the caller allocated with fftw_malloc (nx*ny or more
+ * doubles), which the grid then owns and frees; on failure z is left to
+ * the caller.  Saves a copy when a result is computed in place. */
+rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
+    rc_err *err);
 /* Same shape, metadata and history; values copied if copy_values. */
 rc_grid *rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err);
 /* Check nx, ny, nx*ny, lx, ly before allocating; message names the problem. */

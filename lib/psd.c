@@ -6,6 +6,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "spectral.h"
+
+/* Loops that accumulate into bins give each of NPART fixed row ranges its
+ * own accumulators and add them up in order afterwards, so the result does
+ * not depend on the thread count. */
+#define NPART 16
+
+static size_t
+part_start(long p, size_t n)
+{
+	return (size_t)p * n / NPART;
+}
+
 /* Transform g into a plan (fft, or own made here). */
 static int
 forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
@@ -23,11 +36,11 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 		    fft->nx, fft->ny, g->nx, g->ny);
 	memcpy(fft->real, g->z, n * sizeof(double));
 	if (demean) {
-		double mean = 0;
-		for (size_t k = 0; k < n; k++)
-			mean += g->z[k];
-		mean /= (double)n;
-		for (size_t k = 0; k < n; k++)
+		double mean;
+		long nl = (long)n;
+		rc_mean_rms(g->z, n, &mean, NULL);
+		#pragma omp parallel for schedule(static)
+		for (long k = 0; k < nl; k++)
 			fft->real[k] -= mean;
 	}
 	rc_fft_forward(fft);
@@ -59,6 +72,7 @@ rc_psd2d(const rc_grid *g, rc_fft *fft, rc_err *err)
 	if (s == NULL)
 		goto out;
 	s->kind = RC_KIND_SPECTRUM;
+	#pragma omp parallel for schedule(static)
 	for (size_t j = 0; j < ny; j++) {
 		size_t jj = (j + ny - ny / 2) % ny;	/* DFT index of row j */
 		for (size_t i = 0; i < nx; i++) {
@@ -127,6 +141,7 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 		return rc_seterr(err, "a 1x1 grid has no mode besides q = 0");
 	if (forward(g, fft, &own, &f, 0, err) != 0)
 		return -1;
+	#pragma omp parallel for reduction(min:qmin) reduction(max:qmax) schedule(static)
 	for (size_t j = 0; j < g->ny; j++)
 		for (size_t i = 0; i < f->nxc; i++) {
 			double q = mode_q(g, i, j);
@@ -137,32 +152,51 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 		}
 	/* Bins centred on qmin 10^(b / bins_per_decade). */
 	nb = (size_t)floor(bins_per_decade * log10(qmax / qmin) + 0.5) + 1;
-	if ((acc = rc_calloc(nb, sizeof(*acc), err)) == NULL)
+	if ((acc = rc_calloc((NPART + 1) * nb, sizeof(*acc), err)) == NULL)
 		goto out;
-	for (int pass = 0; pass < 2; pass++)
-		for (size_t j = 0; j < g->ny; j++)
-			for (size_t i = 0; i < f->nxc; i++) {
-				double q = mode_q(g, i, j), c;
-				size_t b;
-				if (q == 0)
-					continue;
-				b = (size_t)floor(bins_per_decade * log10(q / qmin) + 0.5);
-				if (b >= nb)
-					b = nb - 1;
-				c = mode_c(g, f, i, j);
-				double v = independent_weight(g, i, j);
-				if (pass == 0) {
-					double w = rc_fft_weight(i, g->nx);
-					acc[b].w += w;
-					acc[b].wq += w * q;
-					acc[b].wc += w * c;
-					acc[b].v += v;
-					acc[b].vc += v * c;
-				} else {
-					double d = c - acc[b].vc / acc[b].v;
-					acc[b].vdev += v * d * d;
+	/* acc[0 .. nb-1] the totals, acc[(p+1) nb ..] part p's sums. */
+	for (int pass = 0; pass < 2; pass++) {
+		#pragma omp parallel for schedule(static)
+		for (long p = 0; p < NPART; p++) {
+			struct acc *mine = acc + (size_t)(p + 1) * nb;
+			for (size_t j = part_start(p, g->ny); j < part_start(p + 1, g->ny); j++)
+				for (size_t i = 0; i < f->nxc; i++) {
+					double q = mode_q(g, i, j), c, v;
+					size_t b;
+					if (q == 0)
+						continue;
+					b = (size_t)floor(bins_per_decade * log10(q / qmin) + 0.5);
+					if (b >= nb)
+						b = nb - 1;
+					c = mode_c(g, f, i, j);
+					v = independent_weight(g, i, j);
+					if (pass == 0) {
+						double w = rc_fft_weight(i, g->nx);
+						mine[b].w += w;
+						mine[b].wq += w * q;
+						mine[b].wc += w * c;
+						mine[b].v += v;
+						mine[b].vc += v * c;
+					} else {
+						double d = c - acc[b].vc / acc[b].v;
+						mine[b].vdev += v * d * d;
+					}
 				}
+		}
+		for (long p = 0; p < NPART; p++) {
+			const struct acc *mine = acc + (size_t)(p + 1) * nb;
+			for (size_t b = 0; b < nb; b++) {
+				if (pass == 0) {
+					acc[b].w += mine[b].w;
+					acc[b].wq += mine[b].wq;
+					acc[b].wc += mine[b].wc;
+					acc[b].v += mine[b].v;
+					acc[b].vc += mine[b].vc;
+				} else
+					acc[b].vdev += mine[b].vdev;
 			}
+		}
+	}
 	if ((*bins = rc_calloc(nb, sizeof(**bins), err)) == NULL)
 		goto out;
 	for (size_t b = 0; b < nb; b++) {
@@ -193,6 +227,7 @@ rc_psd_moments_x(const rc_grid *g, rc_fft *fft, double *m0, double *m2,
 
 	if (forward(g, fft, &own, &f, 0, err) != 0)
 		return -1;
+	#pragma omp parallel for reduction(+:s0,s2,s4) schedule(static)
 	for (size_t j = 0; j < g->ny; j++)
 		for (size_t i = 0; i < f->nxc; i++) {
 			double w, c, qx, dqx;
@@ -244,6 +279,7 @@ rc_acf(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
 		return -1;
 	/* Autocorrelation R(r) = (1/N) sum_r0 dh(r0) dh(r0 + r): the inverse
 	 * transform of |h_k|^2, divided by N^2. */
+	#pragma omp parallel for schedule(static)
 	for (size_t m = 0; m < f->nxc * ny; m++) {
 		double a = cabs(f->spec[m]);
 		f->spec[m] = a * a;

@@ -4,6 +4,31 @@
 #include <math.h>
 #include <string.h>
 
+/*
+ * Reductions are deterministic for any thread count: the index range is
+ * cut into NPART fixed parts (depending on the size only), threads sum the
+ * parts, and one thread adds the partial sums in order.  So every result
+ * is the same bit for bit whatever -j is, which surfgen's output relies on.
+ */
+#define NPART 64
+
+/* Start of part p of n items. */
+static size_t
+part_start(long p, size_t n)
+{
+	return (size_t)p * n / NPART;
+}
+
+static double
+ordered_sum(const double *partial)
+{
+	double s = 0;
+
+	for (int p = 0; p < NPART; p++)
+		s += partial[p];
+	return s;
+}
+
 /* Load the grid into fft->real and transform; makes a plan if needed. */
 static int
 transform(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, rc_err *err)
@@ -44,7 +69,10 @@ rc_spectral_derivs(const rc_grid *g, rc_fft *fft, double *hx, double *hy,
 	for (int d = 0; d < 3; d++) {
 		if (out[d] == NULL)
 			continue;
-		for (size_t j = 0; j < g->ny; j++) {
+		long ny = (long)g->ny;
+		#pragma omp parallel for schedule(static)
+		for (long jl = 0; jl < ny; jl++) {
+			size_t j = (size_t)jl;
 			double qy = rc_wavenumber(j, g->ny, g->ly);
 			double dqy = rc_deriv_wavenumber(j, g->ny, g->ly);
 			for (size_t i = 0; i < nxc; i++) {
@@ -79,7 +107,10 @@ rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
 		return rc_seterr(err, "internal: rc_spectral_deriv needs a plan");
 	if (transform(g, fft, NULL, &f, err) != 0)
 		return -1;
-	for (size_t j = 0; j < g->ny; j++) {
+	long ny = (long)g->ny;
+	#pragma omp parallel for schedule(static)
+	for (long jl = 0; jl < ny; jl++) {
+		size_t j = (size_t)jl;
 		double qy = rc_wavenumber(j, g->ny, g->ly);
 		double dqy = rc_deriv_wavenumber(j, g->ny, g->ly);
 		for (size_t i = 0; i < f->nxc; i++) {
@@ -102,20 +133,25 @@ int
 rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err)
 {
 	rc_fft own, *f;
-	double sum = 0, n = (double)rc_grid_size(g);
+	double partial[NPART], n = (double)rc_grid_size(g);
 
 	memset(&own, 0, sizeof(own));
 	if (transform(g, fft, &own, &f, err) != 0)
 		return -1;
-	for (size_t j = 0; j < g->ny; j++) {
-		double qy = rc_deriv_wavenumber(j, g->ny, g->ly);
-		for (size_t i = 0; i < f->nxc; i++) {
-			double qx = rc_deriv_wavenumber(i, g->nx, g->lx);
-			double m = cabs(f->spec[j * f->nxc + i]);
-			sum += rc_fft_weight(i, g->nx) * (qx * qx + qy * qy) * m * m;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0;
+		for (size_t j = part_start(p, g->ny); j < part_start(p + 1, g->ny); j++) {
+			double qy = rc_deriv_wavenumber(j, g->ny, g->ly);
+			for (size_t i = 0; i < f->nxc; i++) {
+				double qx = rc_deriv_wavenumber(i, g->nx, g->lx);
+				double m = cabs(f->spec[j * f->nxc + i]);
+				acc += rc_fft_weight(i, g->nx) * (qx * qx + qy * qy) * m * m;
+			}
 		}
+		partial[p] = acc;
 	}
-	*gbar = sqrt(sum) / n;
+	*gbar = sqrt(ordered_sum(partial)) / n;
 	rc_fft_free(&own);
 	return 0;
 }
@@ -123,15 +159,25 @@ rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err)
 void
 rc_mean_rms(const double *z, size_t n, double *mean, double *rms)
 {
-	double s = 0, s2 = 0, m;
+	double partial[NPART], m;
 
-	for (size_t i = 0; i < n; i++)
-		s += z[i];
-	m = s / (double)n;
-	for (size_t i = 0; i < n; i++)
-		s2 += (z[i] - m) * (z[i] - m);
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0;
+		for (size_t i = part_start(p, n); i < part_start(p + 1, n); i++)
+			acc += z[i];
+		partial[p] = acc;
+	}
+	m = ordered_sum(partial) / (double)n;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0;
+		for (size_t i = part_start(p, n); i < part_start(p + 1, n); i++)
+			acc += (z[i] - m) * (z[i] - m);
+		partial[p] = acc;
+	}
 	if (mean)
 		*mean = m;
 	if (rms)
-		*rms = sqrt(s2 / (double)n);
+		*rms = sqrt(ordered_sum(partial) / (double)n);
 }

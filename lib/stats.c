@@ -5,6 +5,31 @@
 #include <stdlib.h>
 #include <string.h>
 
+/*
+ * Sums over the grid are deterministic for any thread count: the points
+ * are cut into NPART fixed ranges (depending on the size only), threads
+ * sum whole ranges, and the range sums are added in order.  So surfstat
+ * prints the same digits whatever -j is.
+ */
+#define NPART 64
+
+static size_t
+part_start(long p, size_t n)
+{
+	return (size_t)p * n / NPART;
+}
+
+/* Add part sums part[p][0 .. k-1] in order into out[0 .. k-1]. */
+static void
+ordered_sums(double (*part)[16], int k, double *out)
+{
+	for (int i = 0; i < k; i++) {
+		out[i] = 0;
+		for (int p = 0; p < NPART; p++)
+			out[i] += part[p][i];
+	}
+}
+
 const char *
 rc_deriv_method_name(enum rc_deriv_method m)
 {
@@ -63,10 +88,14 @@ spectral_fields(const rc_grid *g, rc_fft *fft, double *out[F_COUNT],
 	for (int d = 0; d < F_COUNT; d++) {
 		if (out[d] == NULL)
 			continue;
-		for (size_t j = 0; j < g->ny; j++)
+		long ny = (long)g->ny;
+		#pragma omp parallel for schedule(static)
+		for (long jl = 0; jl < ny; jl++) {
+			size_t j = (size_t)jl;
 			for (size_t i = 0; i < fft->nxc; i++)
 				fft->spec[j * fft->nxc + i] = spec0[j * fft->nxc + i] *
 				    spectral_factor(g, (enum field)d, i, j) / (double)n;
+		}
 		rc_fft_backward(fft);
 		memcpy(out[d], fft->real, n * sizeof(double));
 	}
@@ -120,23 +149,63 @@ rc_deriv_fields(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft,
 	return spectral_fields(g, fft, out, err);
 }
 
+/* One derivative field into out, which may be fft->real (then no copy).
+ * Spectral: the grid is transformed afresh for each field, which costs a
+ * transform but saves keeping a copy of the spectrum. */
+static int
+one_field(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft, enum field d,
+    double *out, rc_err *err)
+{
+	size_t n = rc_grid_size(g);
+	long ny = (long)g->ny;
+
+	if (m == RC_DERIV_FD) {
+		double *fields[F_COUNT] = { NULL, NULL, NULL, NULL };
+		fields[d] = out;
+		fd_fields(g, fields);
+		return 0;
+	}
+	if (fft->nx != g->nx || fft->ny != g->ny)
+		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
+		    fft->nx, fft->ny, g->nx, g->ny);
+	memcpy(fft->real, g->z, n * sizeof(double));
+	rc_fft_forward(fft);
+	#pragma omp parallel for schedule(static)
+	for (long jl = 0; jl < ny; jl++) {
+		size_t j = (size_t)jl;
+		for (size_t i = 0; i < fft->nxc; i++)
+			fft->spec[j * fft->nxc + i] *= spectral_factor(g, d, i, j) /
+			    (double)n;
+	}
+	rc_fft_backward(fft);
+	if (out != fft->real)
+		memcpy(out, fft->real, n * sizeof(double));
+	return 0;
+}
+
 double
 rc_gbar_fd(const rc_grid *g)
 {
 	size_t nx = g->nx, ny = g->ny;
-	double dx = g->lx / (double)nx, dy = g->ly / (double)ny, sum = 0;
+	double dx = g->lx / (double)nx, dy = g->ly / (double)ny, sum;
+	double part[NPART][16];
 	const double *h = g->z;
 
-	#pragma omp parallel for reduction(+:sum)
-	for (size_t j = 0; j < ny; j++) {
-		size_t jp = (j + 1) % ny;
-		for (size_t i = 0; i < nx; i++) {
-			size_t ip = (i + 1) % nx;
-			double a = (h[j * nx + ip] - h[j * nx + i]) / dx;
-			double b = (h[jp * nx + i] - h[j * nx + i]) / dy;
-			sum += a * a + b * b;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0;
+		for (size_t j = part_start(p, ny); j < part_start(p + 1, ny); j++) {
+			size_t jp = (j + 1) % ny;
+			for (size_t i = 0; i < nx; i++) {
+				size_t ip = (i + 1) % nx;
+				double a = (h[j * nx + ip] - h[j * nx + i]) / dx;
+				double b = (h[jp * nx + i] - h[j * nx + i]) / dy;
+				acc += a * a + b * b;
+			}
 		}
+		part[p][0] = acc;
 	}
+	ordered_sums(part, 1, &sum);
 	return sqrt(sum / (double)(nx * ny));
 }
 
@@ -164,42 +233,6 @@ rc_mask_check(const rc_grid *mask, const rc_grid *g, rc_err *err)
 	return count;
 }
 
-/* Field buffers for the statistics; NULL entries are not needed. */
-struct fields {
-	double *f[F_COUNT];
-};
-
-static void
-fields_free(struct fields *fl)
-{
-	for (int d = 0; d < F_COUNT; d++)
-		fftw_free(fl->f[d]);
-}
-
-static int
-fields_make(const rc_grid *g, enum rc_deriv_method m, int want_second,
-    struct fields *fl, rc_err *err)
-{
-	size_t n = rc_grid_size(g);
-
-	memset(fl, 0, sizeof(*fl));
-	for (int d = 0; d < F_COUNT; d++) {
-		if (!want_second && (d == F_LAP || d == F_XX))
-			continue;
-		if ((fl->f[d] = fftw_alloc_real(n)) == NULL) {
-			fields_free(fl);
-			return rc_seterr(err, "out of memory (asked for %zu bytes)",
-			    n * sizeof(double));
-		}
-	}
-	if (rc_deriv_fields(g, m, NULL, fl->f[F_X], fl->f[F_Y], fl->f[F_LAP],
-	    fl->f[F_XX], err) != 0) {
-		fields_free(fl);
-		return -1;
-	}
-	return 0;
-}
-
 static int
 in_set(const rc_grid *mask, size_t k)
 {
@@ -213,62 +246,156 @@ ratio(double a, double b)
 	return b > 0 ? a / b : NAN;
 }
 
+/* Buffers for two derivative fields at a time: the first of its own, the
+ * second the plan's real buffer (spectral) or of its own (FD).  With the
+ * plan's two buffers that is 32 bytes per point beyond the grid's 8
+ * (spectral), 16 (FD). */
+struct pair {
+	rc_fft own, *fft;
+	double *a, *b, *b_own;
+};
+
+static void
+pair_free(struct pair *p)
+{
+	fftw_free(p->a);
+	fftw_free(p->b_own);
+	rc_fft_free(&p->own);
+}
+
+static int
+pair_make(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft,
+    struct pair *p, rc_err *err)
+{
+	size_t n = rc_grid_size(g);
+
+	memset(p, 0, sizeof(*p));
+	if (m == RC_DERIV_SPECTRAL) {
+		if (fft == NULL) {
+			if (rc_fft_init(&p->own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
+				return -1;
+			fft = &p->own;
+		}
+		p->fft = fft;
+		p->b = fft->real;
+	} else if ((p->b = p->b_own = fftw_alloc_real(n)) == NULL)
+		goto nomem;
+	if ((p->a = fftw_alloc_real(n)) == NULL)
+		goto nomem;
+	return 0;
+nomem:
+	pair_free(p);
+	return rc_seterr(err, "out of memory (asked for %zu bytes)", n * sizeof(double));
+}
+
 int
 rc_stats_compute(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_stats *s, rc_err *err)
 {
+	return rc_stats_compute_fft(g, mask, m, NULL, s, err);
+}
+
+int
+rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err)
+{
 	size_t n = rc_grid_size(g), count = n;
-	struct fields fl;
+	struct pair pr;
 	const double *h = g->z;
-	double sum = 0, mean, hmin = INFINITY, hmax = -INFINITY;
+	double sum, mean, hmin = INFINITY, hmax = -INFINITY;
+	double part[NPART][16], sums[16];
 	/* Sums of the averages, named after what they average. */
-	double m2 = 0, m3 = 0, m4 = 0, mxx = 0, myy = 0, mxy = 0, hxx2 = 0;
-	double dh_g2 = 0, dh2_lap = 0, lap1 = 0, dh2_g2 = 0, dh3_lap = 0;
-	double lap2 = 0, dh2_lap2 = 0, g4 = 0, dh_lap = 0;
+	double m2, m3, m4, mxx, myy, mxy, hxx2;
+	double dh_g2, dh2_lap, lap1, dh2_g2, dh3_lap;
+	double lap2, dh2_lap2, g4, dh_lap;
 
 	if (mask != NULL && (count = rc_mask_check(mask, g, err)) == 0)
 		return -1;
-	if (fields_make(g, m, 1, &fl, err) != 0)
+	if (pair_make(g, m, fft, &pr, err) != 0)
 		return -1;
-	const double *hx = fl.f[F_X], *hy = fl.f[F_Y], *lap = fl.f[F_LAP],
-	    *hxx = fl.f[F_XX];
+	const double *hx = pr.a, *hy = pr.b, *lap = pr.b, *hxx = pr.b;
 
-	#pragma omp parallel for reduction(+:sum) reduction(min:hmin) reduction(max:hmax)
-	for (size_t k = 0; k < n; k++) {
-		if (!in_set(mask, k))
-			continue;
-		sum += h[k];
-		hmin = fmin(hmin, h[k]);
-		hmax = fmax(hmax, h[k]);
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0, lo = INFINITY, hi = -INFINITY;
+		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++) {
+			if (!in_set(mask, k))
+				continue;
+			acc += h[k];
+			lo = fmin(lo, h[k]);
+			hi = fmax(hi, h[k]);
+		}
+		part[p][0] = acc;
+		part[p][1] = lo;
+		part[p][2] = hi;
+	}
+	ordered_sums(part, 1, &sum);
+	for (int p = 0; p < NPART; p++) {
+		hmin = fmin(hmin, part[p][1]);
+		hmax = fmax(hmax, part[p][2]);
 	}
 	mean = sum / (double)count;
 
-	#pragma omp parallel for reduction(+:m2,m3,m4,mxx,myy,mxy,hxx2,dh_g2, \
-	    dh2_lap,lap1,dh2_g2,dh3_lap,lap2,dh2_lap2,g4,dh_lap)
-	for (size_t k = 0; k < n; k++) {
-		if (!in_set(mask, k))
-			continue;
-		double d = h[k] - mean, d2 = d * d;
-		double gx2 = hx[k] * hx[k], gy2 = hy[k] * hy[k], g2 = gx2 + gy2;
-		double l = lap[k];
-		m2 += d2;
-		m3 += d2 * d;
-		m4 += d2 * d2;
-		mxx += gx2;
-		myy += gy2;
-		mxy += hx[k] * hy[k];
-		hxx2 += hxx[k] * hxx[k];
-		dh_g2 += d * g2;
-		dh2_lap += d2 * l;
-		lap1 += l;
-		dh2_g2 += d2 * g2;
-		dh3_lap += d2 * d * l;
-		lap2 += l * l;
-		dh2_lap2 += d2 * l * l;
-		g4 += g2 * g2;
-		dh_lap += d * l;
+	/* The gradient: both components at once (M_xy, |grad h|^4). */
+	if (one_field(g, m, pr.fft, F_X, pr.a, err) != 0 ||
+	    one_field(g, m, pr.fft, F_Y, pr.b, err) != 0)
+		goto fail;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double *a = part[p];
+		memset(a, 0, 9 * sizeof(double));
+		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++) {
+			if (!in_set(mask, k))
+				continue;
+			double d = h[k] - mean, d2 = d * d;
+			double gx2 = hx[k] * hx[k], gy2 = hy[k] * hy[k], g2 = gx2 + gy2;
+			a[0] += d2;
+			a[1] += d2 * d;
+			a[2] += d2 * d2;
+			a[3] += gx2;
+			a[4] += gy2;
+			a[5] += hx[k] * hy[k];
+			a[6] += d * g2;
+			a[7] += d2 * g2;
+			a[8] += g2 * g2;
+		}
 	}
-	fields_free(&fl);
+	ordered_sums(part, 9, sums);
+	m2 = sums[0]; m3 = sums[1]; m4 = sums[2]; mxx = sums[3]; myy = sums[4];
+	mxy = sums[5]; dh_g2 = sums[6]; dh2_g2 = sums[7]; g4 = sums[8];
+	if (one_field(g, m, pr.fft, F_LAP, pr.b, err) != 0)
+		goto fail;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double *a = part[p];
+		memset(a, 0, 6 * sizeof(double));
+		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++) {
+			if (!in_set(mask, k))
+				continue;
+			double d = h[k] - mean, d2 = d * d, l = lap[k];
+			a[0] += d2 * l;
+			a[1] += l;
+			a[2] += d2 * d * l;
+			a[3] += l * l;
+			a[4] += d2 * l * l;
+			a[5] += d * l;
+		}
+	}
+	ordered_sums(part, 6, sums);
+	dh2_lap = sums[0]; lap1 = sums[1]; dh3_lap = sums[2]; lap2 = sums[3];
+	dh2_lap2 = sums[4]; dh_lap = sums[5];
+	if (one_field(g, m, pr.fft, F_XX, pr.b, err) != 0)
+		goto fail;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double acc = 0;
+		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++)
+			if (in_set(mask, k))
+				acc += hxx[k] * hxx[k];
+		part[p][0] = acc;
+	}
+	ordered_sums(part, 1, &hxx2);
+	pair_free(&pr);
 
 	double c = (double)count;
 	m2 /= c; m3 /= c; m4 /= c; mxx /= c; myy /= c; mxy /= c; hxx2 /= c;
@@ -304,28 +431,45 @@ rc_stats_compute(const rc_grid *g, const rc_grid *mask,
 	s->phi[8] = ratio(g4 - gg2 - 2 * trm2, gg2);
 	s->phi[9] = ratio((mxx - myy) * (mxx - myy) + 4 * mxy * mxy, gg2);
 	return 0;
+fail:
+	pair_free(&pr);
+	return -1;
 }
 
 int
 rc_stats_by_height(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, size_t nbins, rc_height_bin *bins, rc_err *err)
 {
+	return rc_stats_by_height_fft(g, mask, m, NULL, nbins, bins, err);
+}
+
+int
+rc_stats_by_height_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, size_t nbins, rc_height_bin *bins,
+    rc_err *err)
+{
 	size_t n = rc_grid_size(g);
-	struct fields fl;
+	struct pair pr;
 	double hmin = INFINITY, hmax = -INFINITY, width;
 
 	if (nbins == 0)
 		return rc_seterr(err, "number of height bins must be positive");
 	if (mask != NULL && rc_mask_check(mask, g, err) == 0)
 		return -1;
+	#pragma omp parallel for reduction(min:hmin) reduction(max:hmax)
 	for (size_t k = 0; k < n; k++) {
 		if (!in_set(mask, k))
 			continue;
 		hmin = fmin(hmin, g->z[k]);
 		hmax = fmax(hmax, g->z[k]);
 	}
-	if (fields_make(g, m, 0, &fl, err) != 0)
+	if (pair_make(g, m, fft, &pr, err) != 0)
 		return -1;
+	if (one_field(g, m, pr.fft, F_X, pr.a, err) != 0 ||
+	    one_field(g, m, pr.fft, F_Y, pr.b, err) != 0) {
+		pair_free(&pr);
+		return -1;
+	}
 	width = (hmax - hmin) / (double)nbins;
 	for (size_t b = 0; b < nbins; b++) {
 		memset(&bins[b], 0, sizeof(bins[b]));
@@ -340,13 +484,13 @@ rc_stats_by_height(const rc_grid *g, const rc_grid *mask,
 		size_t b = width > 0 ? (size_t)((g->z[k] - hmin) / width) : 0;
 		if (b >= nbins)
 			b = nbins - 1;	/* the maximum itself */
-		double gx = fl.f[F_X][k], gy = fl.f[F_Y][k];
+		double gx = pr.a[k], gy = pr.b[k];
 		bins[b].n++;
 		bins[b].mxx += gx * gx;
 		bins[b].myy += gy * gy;
 		bins[b].mxy += gx * gy;
 	}
-	fields_free(&fl);
+	pair_free(&pr);
 	for (size_t b = 0; b < nbins; b++) {
 		double c = (double)bins[b].n;
 		if (bins[b].n == 0) {

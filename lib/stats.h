@@ -64,6 +64,12 @@ typedef struct rc_stats {
 int rc_stats_compute(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_stats *s, rc_err *err);
 
+/* The same with a plan of the grid's size to reuse (NULL: one is made);
+ * spectral derivatives then need one more grid's worth of memory beyond
+ * the plan's buffers, finite differences two. */
+int rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err);
+
 /* The gradient tensor and rms gradient in nbins equal-width height bins
  * between the smallest and largest height of the averaging set. */
 typedef struct rc_height_bin {
@@ -75,5 +81,8 @@ typedef struct rc_height_bin {
 
 int rc_stats_by_height(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, size_t nbins, rc_height_bin *bins, rc_err *err);
+int rc_stats_by_height_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, size_t nbins, rc_height_bin *bins,
+    rc_err *err);
 
 #endif

@@ -309,33 +309,40 @@ fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
 	}
 }
 
-static int
-make_selfaffine(const rc_synth_params *p, rc_grid *g, rc_err *err)
+/* The surface in place: the half-complex modes are filled into one buffer
+ * of ny rows of nxc complex values, transformed in place (real rows padded
+ * to 2 nxc doubles), and the rows are packed to nx doubles; the buffer then
+ * becomes the grid's values, so the peak is one grid plus 2 ny values. */
+static rc_grid *
+make_selfaffine(const rc_synth_params *p, enum rc_fft_effort effort,
+    double *plan_seconds, rc_err *err)
 {
 	size_t nxc = p->nx / 2 + 1, nspec = nxc * p->ny;
 	fftw_complex *spec;
-	double *sums, total = 0, target, scale;
+	double *sums, *real, total = 0, target, scale;
 	int by_gradient = !(p->rms_height > 0);
 	fftw_plan plan;
+	rc_grid *g;
 	long k;
 
 	target = by_gradient ? (p->rms_gradient > 0 ? p->rms_gradient : 1.0) :
 	    p->rms_height;
-	if ((spec = fftw_alloc_complex(nspec)) == NULL)
-		return rc_seterr(err, "out of memory (asked for %zu bytes)",
+	if ((spec = fftw_alloc_complex(nspec)) == NULL) {
+		rc_seterr(err, "out of memory (asked for %zu bytes)",
 		    nspec * sizeof(fftw_complex));
+		return NULL;
+	}
 	if ((sums = rc_malloc(p->ny * sizeof(double), err)) == NULL) {
 		fftw_free(spec);
-		return -1;
+		return NULL;
 	}
-	/* Plan before filling: planning may scribble on the arrays. */
-	plan = fftw_plan_dft_c2r_2d((int)p->ny, (int)p->nx, spec, g->z,
-	    FFTW_ESTIMATE);
+	/* Plan before filling: planning may scribble on the array. */
+	plan = rc_fft_plan_c2r_inplace(p->nx, p->ny, spec, effort, plan_seconds,
+	    NULL, err);
 	if (plan == NULL) {
 		free(sums);
 		fftw_free(spec);
-		return rc_seterr(err, "FFTW could not plan a %zux%zu transform",
-		    p->nx, p->ny);
+		return NULL;
 	}
 	fill_selfaffine(p, spec, nxc, sums, by_gradient);
 	/* Summed in row order whatever the thread count, so the result is
@@ -346,9 +353,10 @@ make_selfaffine(const rc_synth_params *p, rc_grid *g, rc_err *err)
 	if (!(total > 0)) {
 		fftw_destroy_plan(plan);
 		fftw_free(spec);
-		return rc_seterr(err, "no grid mode lies in the band lambda_s = %g <= "
+		rc_seterr(err, "no grid mode lies in the band lambda_s = %g <= "
 		    "lambda < lambda_r = %g; enlarge the cell or widen the band",
 		    rc_synth_lambda_s(p), rc_synth_lambda_r(p));
+		return NULL;
 	}
 	scale = target / sqrt(total);
 #pragma omp parallel for schedule(static)
@@ -356,8 +364,14 @@ make_selfaffine(const rc_synth_params *p, rc_grid *g, rc_err *err)
 		spec[k] *= scale;
 	fftw_execute(plan);
 	fftw_destroy_plan(plan);
-	fftw_free(spec);
-	return 0;
+	/* Pack the padded rows (2 nxc apart) to nx apart.  Row j moves to
+	 * where earlier rows were, so this runs in row order. */
+	real = (double *)spec;
+	for (size_t j = 1; j < p->ny; j++)
+		memmove(real + j * p->nx, real + j * 2 * nxc, p->nx * sizeof(double));
+	if ((g = rc_grid_adopt(p->nx, p->ny, p->lx, p->ly, real, err)) == NULL)
+		fftw_free(spec);
+	return g;
 }
 
 /* Distance along an axis of length l to the nearest image of l/2. */
@@ -428,8 +442,11 @@ normalise(const rc_synth_params *p, rc_grid *g, double *scale, rc_err *err)
 		return rc_seterr(err, "the surface has zero rms %s; it cannot be "
 		    "normalised", p->rms_gradient > 0 ? "gradient" : "height");
 	*scale = (p->rms_gradient > 0 ? p->rms_gradient : p->rms_height) / now;
-	for (size_t k = 0; k < (size_t)n; k++)
-		g->z[k] *= *scale;
+	double factor = *scale;
+	long nl = (long)n;
+#pragma omp parallel for schedule(static)
+	for (long k = 0; k < nl; k++)
+		g->z[k] *= factor;
 	return 0;
 }
 
@@ -479,18 +496,29 @@ write_meta(const rc_synth_params *p, rc_grid *g, double scale, rc_err *err)
 rc_grid *
 rc_synth(const rc_synth_params *p, rc_err *err)
 {
+	return rc_synth_planned(p, RC_FFT_ESTIMATE, NULL, err);
+}
+
+rc_grid *
+rc_synth_planned(const rc_synth_params *p, enum rc_fft_effort effort,
+    double *plan_seconds, rc_err *err)
+{
 	rc_grid *g;
 	double scale = 1;
 
+	if (plan_seconds != NULL)
+		*plan_seconds = 0;
 	if (rc_synth_check(p, err) != 0)
 		return NULL;
-	if ((g = rc_grid_new(p->nx, p->ny, p->lx, p->ly, err)) == NULL)
+	if (p->type == RC_SURF_SELFAFFINE)
+		g = make_selfaffine(p, effort, plan_seconds, err);
+	else
+		g = rc_grid_new(p->nx, p->ny, p->lx, p->ly, err);
+	if (g == NULL)
 		return NULL;
 	g->kind = RC_KIND_HEIGHT;
 	switch (p->type) {
 	case RC_SURF_SELFAFFINE:
-		if (make_selfaffine(p, g, err) != 0)
-			goto fail;
 		break;
 	case RC_SURF_HARMONIC:
 		make_harmonic(p, g);

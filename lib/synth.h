@@ -11,6 +11,7 @@
 #define RC_SYNTH_H
 
 #include <stdint.h>
+#include "fft.h"
 #include "grid.h"
 
 enum rc_surface_type {
@@ -67,6 +68,13 @@ int rc_synth_check(const rc_synth_params *p, rc_err *err);
 /* Make the surface; generation parameters go into the metadata
  * (type, H, lambda_r, lambda_s, rolloff, peklenik, seed, ...). */
 rc_grid *rc_synth(const rc_synth_params *p, rc_err *err);
+/* The same with the FFT planning effort of the self-affine transform
+ * (rc_synth uses ESTIMATE, whose output is the same bit for bit for any
+ * thread count) and the planning time into *plan_seconds (may be NULL;
+ * 0 for types that need no transform).  The transform is done in place:
+ * peak memory is one grid plus 2 ny values. */
+rc_grid *rc_synth_planned(const rc_synth_params *p, enum rc_fft_effort effort,
+    double *plan_seconds, rc_err *err);
 
 /* The defaults resolved: lambda_r, lambda_s, wavelength actually used. */
 double rc_synth_lambda_r(const rc_synth_params *p);

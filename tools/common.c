@@ -19,6 +19,7 @@ tool_init(struct tool *t, const char *name, int argc, char **argv)
 	memset(t, 0, sizeof(*t));
 	t->name = name;
 	t->lx = t->ly = 1.0;
+	t->fft_effort = -1;
 	for (int i = 0; i < argc; i++)
 		len += strlen(argv[i]) + 3;
 	if ((t->cmdline = malloc(len)) == NULL)
@@ -120,8 +121,59 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 	case OPT_VERSION:
 		printf("%s %s\n", t->name, RC_VERSION);
 		exit(tool_exit(t, 0));
+	case OPT_WISDOM:
+		if (arg[0] == '\0' || rc_is_stdio(arg))
+			tool_bad(t, "--wisdom %s: want a file name", arg);
+		else
+			t->wisdom = arg;
+		return 1;
+	case OPT_FFT_EFFORT:
+		if ((n = rc_fft_effort_parse(arg)) < 0 || n == RC_FFT_WISDOM)
+			tool_bad(t, "--fft-effort %s: want estimate, measure or patient",
+			    arg);
+		else
+			t->fft_effort = (int)n;
+		return 1;
 	}
 	return 0;
+}
+
+void
+tool_fft_setup(struct tool *t)
+{
+	const char *env = getenv("RC_WISDOM");
+	rc_err err;
+
+	rc_fft_set_threads(t->threads);
+	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
+		t->wisdom = env;
+	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)
+		tool_fail(t, "%s: %s", t->wisdom, err.msg);
+}
+
+enum rc_fft_effort
+tool_fft_effort(struct tool *t, size_t nx, size_t ny, double pairs)
+{
+	enum rc_fft_effort e;
+
+	if (t->fft_effort >= 0)
+		e = (enum rc_fft_effort)t->fft_effort;
+	else if ((e = rc_fft_effort_auto(nx, ny, pairs)) == RC_FFT_WISDOM &&
+	    t->wisdom != NULL)
+		e = RC_FFT_MEASURE;
+	if (e == RC_FFT_MEASURE || e == RC_FFT_PATIENT)
+		t->fft_measured = 1;
+	return e;
+}
+
+void
+tool_fft_finish(const struct tool *t)
+{
+	rc_err err;
+
+	if (t->wisdom != NULL && t->fft_measured &&
+	    rc_fft_wisdom_export(t->wisdom, &err) != 0)
+		tool_warn(t, "%s: wisdom not saved: %s", t->wisdom, err.msg);
 }
 
 int

@@ -11,6 +11,7 @@
 
 #include <stddef.h>
 #include <stdio.h>
+#include "fft.h"
 #include "grid.h"
 #include "io.h"
 
@@ -21,6 +22,8 @@ enum {
 	OPT_JSON = 1000,
 	OPT_PNG,
 	OPT_VERSION,
+	OPT_WISDOM,
+	OPT_FFT_EFFORT,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -35,7 +38,16 @@ struct tool {
 	double lx, ly;		/* -L, cell size for inputs that have none */
 	int have_l;
 	int nbad;		/* usage problems reported so far */
+	const char *wisdom;	/* --wisdom FILE, else $RC_WISDOM, else NULL */
+	int fft_effort;		/* --fft-effort, -1 for the policy */
+	int fft_measured;	/* a plan was asked for with MEASURE or more */
 };
+
+/* The FFT options of the tools that plan transforms; put them in the
+ * tool's struct option table. */
+#define TOOL_FFT_LONGOPTS \
+	{ "wisdom", required_argument, NULL, OPT_WISDOM }, \
+	{ "fft-effort", required_argument, NULL, OPT_FFT_EFFORT }
 
 void tool_init(struct tool *t, const char *name, int argc, char **argv);
 
@@ -53,6 +65,21 @@ void tool_usage_check(const struct tool *t);
 /* The shared options: -o -j -q -L --json --png --version.  Returns 1 if
  * opt was one of them (handled), 0 otherwise. */
 int tool_common_option(struct tool *t, int opt, const char *arg);
+
+/* FFT set-up, after tool_usage_check and before any plan: threads (-j,
+ * else OMP_NUM_THREADS, else all cores) and FFTW wisdom from --wisdom FILE
+ * or the file named by $RC_WISDOM (a missing file is fine; an unreadable or
+ * foreign one is an error, exit 1, so it is never overwritten). */
+void tool_fft_setup(struct tool *t);
+/* The effort for a plan of nx x ny that will run about `pairs` transform
+ * pairs: --fft-effort if given; else rc_fft_effort_auto, except that a
+ * one-shot plan of a big grid is measured when a wisdom file is in use
+ * (the first run pays, later runs load it). */
+enum rc_fft_effort tool_fft_effort(struct tool *t, size_t nx, size_t ny,
+    double pairs);
+/* Save the wisdom atomically if a file is in use and a plan was measured;
+ * a failure is a warning (the results are unaffected). */
+void tool_fft_finish(const struct tool *t);
 
 /* Parsers: on a bad value they call tool_bad naming the option and return -1. */
 int tool_double(struct tool *t, const char *opt, const char *arg, double *v);

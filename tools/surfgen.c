@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "common.h"
 #include "fft.h"
@@ -51,6 +52,9 @@ usage(void)
 	    "  (--rms-gradient/--rms-height rescale these types too when given)\n"
 	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
 	    "  --png FILE            PNG preview\n"
+	    "  --fft-effort E        estimate (default), measure or patient FFT planning\n"
+	    "  --wisdom FILE         load FFTW wisdom, save it after planning (default\n"
+	    "                        $RC_WISDOM); with it, big grids are planned with measure\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -58,6 +62,7 @@ static const struct option longopts[] = {
 	{ "help", no_argument, NULL, 'h' },
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ "png", required_argument, NULL, OPT_PNG },
+	TOOL_FFT_LONGOPTS,
 	{ "lambda-r", required_argument, NULL, OPT_LAMBDA_R },
 	{ "lambda-s", required_argument, NULL, OPT_LAMBDA_S },
 	{ "rolloff", no_argument, NULL, OPT_ROLLOFF },
@@ -117,7 +122,9 @@ main(int argc, char **argv)
 	int opt, type, have_h = 0, have_lr = 0, have_ls = 0, have_rolloff = 0;
 	int have_pek = 0, have_seed = 0, have_gauss = 0, have_exp = 0, have_rad = 0;
 	int have_wave = 0, have_amp = 0;
-	double v;
+	double v, plan_seconds;
+	enum rc_fft_effort effort;
+	struct timespec t0, t1;
 
 	tool_init(&t, "surfgen", argc, argv);
 	rc_synth_defaults(&p);
@@ -232,9 +239,19 @@ main(int argc, char **argv)
 		tool_bad(&t, "%s", err.msg);
 	tool_usage_check(&t);
 
-	rc_fft_set_threads(t.threads);
-	if ((g = rc_synth(&p, &err)) == NULL)
+	tool_fft_setup(&t);
+	effort = tool_fft_effort(&t, p.nx, p.ny, 1);
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	if ((g = rc_synth_planned(&p, effort, &plan_seconds, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	/* Planning time is worth a line only when it was asked for. */
+	if (!t.quiet && (effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT))
+		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s; synthesis: %.3g s",
+		    p.nx, p.ny, rc_fft_effort_name(effort), plan_seconds,
+		    (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec -
+		    t0.tv_nsec) - plan_seconds);
+	tool_fft_finish(&t);
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail(&t, "%s: %s", t.png, err.msg);
 	tool_write_grid(&t, g, t.out);

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "atomic.h"
 #include "common.h"
@@ -45,6 +46,9 @@ usage(void)
 	    "  --mask FILE           average over the points where the mask is 1\n"
 	    "  --fd                  finite-difference derivatives (default spectral)\n"
 	    "  --png FILE            PNG preview of the surface\n"
+	    "  --fft-effort E        estimate, measure or patient FFT planning (default:\n"
+	    "                        estimate, or measure for big grids with --wisdom)\n"
+	    "  --wisdom FILE         load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 	    "  -o FILE               table output (default stdout)   --json  JSON\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
@@ -55,6 +59,7 @@ static const struct option longopts[] = {
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ "json", no_argument, NULL, OPT_JSON },
 	{ "png", required_argument, NULL, OPT_PNG },
+	TOOL_FFT_LONGOPTS,
 	{ "mask", required_argument, NULL, OPT_MASK },
 	{ "psd", no_argument, NULL, OPT_PSD },
 	{ "psd2d", required_argument, NULL, OPT_PSD2D },
@@ -112,20 +117,33 @@ num(const struct tool *t, rc_row *r, const char *name, double v)
 		tool_fail(t, "out of memory");
 }
 
+static double
+seconds_since(const struct timespec *t0)
+{
+	struct timespec t1;
+
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	return (double)(t1.tv_sec - t0->tv_sec) + 1e-9 * (double)(t1.tv_nsec -
+	    t0->tv_nsec);
+}
+
 static void
 scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
-    enum rc_deriv_method m)
+    enum rc_deriv_method m, rc_fft *fft)
 {
 	rc_stats s;
 	rc_err err;
 	rc_row r;
 	struct out o;
-	double gbar;
+	struct timespec t0;
+	double gbar, seconds;
 	char name[8];
 
-	if (rc_rms_gradient(g, NULL, &gbar, &err) != 0 ||
-	    rc_stats_compute(g, mask, m, &s, &err) != 0)
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	if (rc_rms_gradient(g, fft, &gbar, &err) != 0 ||
+	    rc_stats_compute_fft(g, mask, m, fft, &s, &err) != 0)
 		tool_fail(t, "%s", err.msg);
+	seconds = seconds_since(&t0);
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||
@@ -155,6 +173,8 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 		num(t, &r, "gbar_c", s.gbar);
 		num(t, &r, "gbar_c_prime", s.gbar_prime);
 	}
+	num(t, &r, "plan_seconds", fft->plan_seconds);
+	num(t, &r, "seconds", seconds);
 	if (rc_row_meta(&r, g) != 0)
 		tool_fail(t, "out of memory");
 	out_open(t, &o);
@@ -185,7 +205,7 @@ psd_table(const struct tool *t, const rc_psd_bin *b, size_t nb)
 }
 
 static void
-acf_table(const struct tool *t, const rc_grid *g)
+acf_table(const struct tool *t, const rc_grid *g, rc_fft *fft)
 {
 	rc_acf_point *p;
 	size_t np;
@@ -193,7 +213,7 @@ acf_table(const struct tool *t, const rc_grid *g)
 	struct out o;
 	rc_row r;
 
-	if (rc_acf(g, NULL, &p, &np, &err) != 0)
+	if (rc_acf(g, fft, &p, &np, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	rc_row_init(&r);
 	out_open(t, &o);
@@ -214,7 +234,7 @@ acf_table(const struct tool *t, const rc_grid *g)
 
 static void
 height_table(const struct tool *t, const rc_grid *g, const rc_grid *mask,
-    enum rc_deriv_method m, size_t nbins)
+    enum rc_deriv_method m, rc_fft *fft, size_t nbins)
 {
 	rc_height_bin *b;
 	rc_err err;
@@ -223,7 +243,7 @@ height_table(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	size_t total = 0;
 
 	if ((b = rc_malloc(nbins * sizeof(*b), &err)) == NULL ||
-	    rc_stats_by_height(g, mask, m, nbins, b, &err) != 0)
+	    rc_stats_by_height_fft(g, mask, m, fft, nbins, b, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	for (size_t k = 0; k < nbins; k++)
 		total += b[k].n;
@@ -311,6 +331,7 @@ main(int argc, char **argv)
 	double bpd = 10;
 	long v;
 	rc_grid *g, *mask = NULL;
+	rc_fft fft, *plan;
 	rc_err err;
 
 	tool_init(&t, "surfstat", argc, argv);
@@ -381,7 +402,7 @@ main(int argc, char **argv)
 		tool_check_grid_path(&t, "--psd2d", psd2d);
 	tool_usage_check(&t);
 
-	rc_fft_set_threads(t.threads);
+	tool_fft_setup(&t);
 	g = tool_read_grid(&t, in);
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
@@ -390,8 +411,21 @@ main(int argc, char **argv)
 	}
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail(&t, "%s: %s", t.png, err.msg);
+	/* One plan for every transform of the run (a handful: the scalars
+	 * take nine), made after the mask so that planning never waits on
+	 * input that turns out bad. */
+	memset(&fft, 0, sizeof(fft));
+	if ((table != T_BY_HEIGHT || method == RC_DERIV_SPECTRAL || psd2d != NULL ||
+	    gp != NULL) && rc_fft_init(&fft, g->nx, g->ny,
+	    tool_fft_effort(&t, g->nx, g->ny, 5), &err) != 0)
+		tool_fail(&t, "%s", err.msg);
+	plan = fft.nx ? &fft : NULL;
+	tool_fft_finish(&t);
+	if (!t.quiet && plan && fft.effort != RC_FFT_ESTIMATE && table != T_SCALARS)
+		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s", g->nx, g->ny,
+		    rc_fft_effort_name(fft.effort), fft.plan_seconds);
 	if (psd2d != NULL) {
-		rc_grid *s = rc_psd2d(g, NULL, &err);
+		rc_grid *s = rc_psd2d(g, plan, &err);
 		if (s == NULL)
 			tool_fail(&t, "%s", err.msg);
 		tool_write_grid(&t, s, psd2d);
@@ -400,7 +434,7 @@ main(int argc, char **argv)
 	if (table == T_PSD || gp != NULL) {
 		rc_psd_bin *b;
 		size_t nb;
-		if (rc_psd_radial(g, NULL, bpd, &b, &nb, &err) != 0)
+		if (rc_psd_radial(g, plan, bpd, &b, &nb, &err) != 0)
 			tool_fail(&t, "%s", err.msg);
 		if (gp != NULL)
 			gnuplot_script(&t, gp, g, b, nb);
@@ -410,17 +444,18 @@ main(int argc, char **argv)
 	}
 	switch (table) {
 	case T_SCALARS:
-		scalars(&t, g, mask, method);
+		scalars(&t, g, mask, method, plan);
 		break;
 	case T_ACF:
-		acf_table(&t, g);
+		acf_table(&t, g, plan);
 		break;
 	case T_BY_HEIGHT:
-		height_table(&t, g, mask, method, nbins);
+		height_table(&t, g, mask, method, plan, nbins);
 		break;
 	case T_PSD:
 		break;
 	}
+	rc_fft_free(&fft);
 	rc_grid_free(mask);
 	rc_grid_free(g);
 	return tool_exit(&t, 0);

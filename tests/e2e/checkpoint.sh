@@ -1,0 +1,149 @@
+#!/bin/sh
+# checkpoint.sh - gfmd-solve --checkpoint / --checkpoint-every / --resume:
+# an interrupted sweep, resumed with the command its message prints,
+# gives the rows of an uninterrupted run.
+. "$RC_TOP/tests/e2e/lib.sh"
+T=$T_TMP
+cd "$T" || exit 1
+
+PLIST=0.005,0.01,0.02,0.03,0.05,0.08,0.12,0.2
+TOL=1e-9
+
+# same_rows REF GOT: the same pressures (bit for bit), n_c within one
+# point (a contact point whose pressure is within the tolerance of zero
+# may flip on another path to the same fixed point), the elastic energy
+# to 1e-6 relative (the energy error is second order in the residual,
+# 1e-9 here; 1e-6 leaves a wide margin yet catches a wrong state).
+same_rows() {
+	paste "$1" "$2" | awk -F'\t' '
+	NR == 1 { h = NF / 2; for (i = 1; i <= h; i++) c[$i] = i
+		if ($1 != $(h + 1) || NF % 2) { print "headers differ"; bad++ } next }
+	{ rows++
+	  if ($c["p"] != $(c["p"] + h)) { print "row " NR - 1 ": p " $c["p"] " vs " $(c["p"] + h); bad++ }
+	  d = $c["n_c"] - $(c["n_c"] + h); if (d < 0) d = -d
+	  if (d > 1) { print "row " NR - 1 ": n_c " $c["n_c"] " vs " $(c["n_c"] + h); bad++ }
+	  e = $c["elastic_energy"]; f = $(c["elastic_energy"] + h); r = (e - f) / e; if (r < 0) r = -r
+	  if (r > 1e-6) { print "row " NR - 1 ": energy " e " vs " f; bad++ } }
+	END { if (rows != 8) { print rows + 0 " rows"; bad++ } exit bad > 0 }'
+}
+
+# --- The uninterrupted reference.
+n=256
+surfgen -n $n --seed 5 --lambda-s 0.02 -o s$n.surf
+gfmd-solve -j 1 -q --tol $TOL -p $PLIST -o ref$n.tsv s$n.surf
+check "reference run" test $? -eq 0
+
+# --- Interrupt a run once its first checkpoint exists (so the handlers
+# are installed and a pressure is done), resume it with the printed
+# command.  If the run finishes first (a fast machine), try a grid twice
+# as fine; if it still finishes, assert that path instead.
+interrupted=0
+for n in 256 512; do
+	if [ ! -f s$n.surf ]; then
+		surfgen -n $n --seed 5 --lambda-s 0.02 -o s$n.surf
+		gfmd-solve -j 1 -q --tol $TOL -p $PLIST -o ref$n.tsv s$n.surf
+	fi
+	rm -f ck.surf part.tsv
+	gfmd-solve -j 1 -q --tol $TOL -p $PLIST --checkpoint ck.surf -o part.tsv \
+	    s$n.surf 2>msg &
+	pid=$!
+	i=0
+	while [ ! -f ck.surf ] && [ $i -lt 300 ] && kill -0 $pid 2>/dev/null; do
+		sleep 0.05; i=$((i + 1))
+	done
+	kill -INT $pid 2>/dev/null
+	wait $pid
+	st=$?
+	if [ $st -eq 0 ]; then
+		# Finished before the signal: complete rows, checkpoint gone.
+		same_rows ref$n.tsv part.tsv > cmp
+		check "n = $n finished before the signal: rows as the reference ($(head -n 2 cmp))" test $? -eq 0
+		check "n = $n finished: checkpoint removed" test ! -f ck.surf
+		continue
+	fi
+	interrupted=1
+	check_rel "interrupted: exit status 1" $st 1 0
+	grep -q 'interrupted by signal 2' msg
+	check "interrupted: the message names the signal ($(head -c 200 msg))" test $? -eq 0
+	grep -q 'state saved in ck.surf; resume with: gfmd-solve -j 1 -q --tol 1e-9 -p [0-9.,]* --checkpoint ck.surf -o part.tsv s'$n'.surf --resume ck.surf$' msg
+	check "interrupted: the message gives the resume command" test $? -eq 0
+	check "interrupted: checkpoint written" test -f ck.surf
+	head -c 2000 ck.surf | grep -q '^meta.checkpoint.pressures = 0.005,0.01,0.02,0.03,0.05,0.08,0.12,0.2$'
+	check "checkpoint holds the full pressure list" test $? -eq 0
+	done_rows=$(($(wc -l < part.tsv) - 1))
+	next=$(head -c 4000 ck.surf | sed -n 's/^meta.checkpoint.next = //p')
+	check_range "interrupted: some but not all rows in -o" $done_rows 1 7
+	check_rel "checkpoint's next pressure = rows written" "$next" $done_rows 0
+	# Resume exactly as told.
+	cmd=$(sed -n 's/.*resume with: //p' msg)
+	sh -c "$cmd" 2>resume.err
+	check_rel "resume: exit 0 ($(head -c 200 resume.err))" $? 0 0
+	same_rows ref$n.tsv part.tsv > cmp
+	check "resumed run = uninterrupted run ($(head -n 3 cmp | tr '\n' ' '))" test $? -eq 0
+	check "resume complete: checkpoint removed" test ! -f ck.surf
+	break
+done
+[ $interrupted -eq 1 ] || echo "checkpoint.sh: every run finished before SIGINT; the resume path was not exercised"
+
+# --- SIGTERM mid-solve on one long pressure, then resume: the resumed
+# solve starts from the saved partial u.  Done on the 256^2 surface with a
+# tight tolerance; without --checkpoint the message says how to get one.
+n=256
+gfmd-solve -j 1 -q --tol $TOL -p 0.01 s$n.surf > noref.tsv 2>msg &
+pid=$!
+sleep 0.3
+kill -TERM $pid 2>/dev/null
+wait $pid
+st=$?
+if [ $st -eq 1 ]; then
+	grep -q -- '--checkpoint FILE makes a run resumable' msg
+	check "no --checkpoint: the message says how to make it resumable" test $? -eq 0
+fi
+
+# --- Periodic checkpoints (every 0.0005 min = 30 ms) stop and continue
+# every solve many times; the rows still equal the reference, and the
+# file is gone at the end.
+rm -f ck2.surf
+gfmd-solve -j 1 -q --tol $TOL -p $PLIST --checkpoint ck2.surf \
+    --checkpoint-every 0.0005 s256.surf > every.tsv
+check "--checkpoint-every: exit 0" test $? -eq 0
+same_rows ref256.tsv every.tsv > cmp
+check "--checkpoint-every: rows as the reference ($(head -n 2 cmp | tr '\n' ' '))" test $? -eq 0
+check "--checkpoint-every: checkpoint removed at the end" test ! -f ck2.surf
+
+# --- A checkpoint saved mid-solve with --max-iter small enough: resume
+# it by hand and check every mismatch is refused with its reason.
+gfmd-solve -j 1 -q --tol $TOL -p $PLIST --checkpoint ck3.surf s256.surf > /dev/null 2>msg &
+pid=$!
+i=0
+while [ ! -f ck3.surf ] && [ $i -lt 300 ] && kill -0 $pid 2>/dev/null; do sleep 0.05; i=$((i + 1)); done
+kill -INT $pid 2>/dev/null; wait $pid
+if [ -f ck3.surf ]; then
+	gfmd-solve -q --tol 1e-8 --resume ck3.surf s256.surf > /dev/null 2>err
+	check_rel "resume with another --tol: exit 1" $? 1 0
+	check "resume with another --tol: named" grep -q 'checkpoint has --tol' err
+	gfmd-solve -q --method cg --resume ck3.surf s256.surf > /dev/null 2>err
+	check "resume with another method: named" grep -q 'checkpoint has --method fire, this run cg' err
+	gfmd-solve -q -p 0.01 --resume ck3.surf s256.surf > /dev/null 2>err
+	check "resume with another pressure list: named" grep -q 'checkpoint has 8 pressures, this run 1' err
+	surfgen -n 256 --seed 6 --lambda-s 0.02 -o other.surf
+	gfmd-solve -q --resume ck3.surf other.surf > /dev/null 2>err
+	check "resume on another indenter: named" grep -q 'another indenter' err
+	check_status "resume on another grid size: exit 1" 1 gfmd-solve -q --resume ck3.surf s512.surf
+	# Options not given come from the checkpoint: same rows.
+	gfmd-solve -j 1 -q --resume ck3.surf s256.surf > byhand.tsv
+	same_rows ref256.tsv byhand.tsv > cmp
+	check "resume with the options from the checkpoint ($(head -n 2 cmp | tr '\n' ' '))" test $? -eq 0
+	check "resume without --checkpoint keeps the file" test -f ck3.surf
+fi
+
+# --- Usage and bad checkpoints.
+check_status "--checkpoint-every without --checkpoint: exit 2" 2 gfmd-solve -p 0.1 --checkpoint-every 1 s256.surf
+check_status "--checkpoint-every 0: exit 2" 2 gfmd-solve -p 0.1 --checkpoint x.surf --checkpoint-every 0 s256.surf
+check_status "--resume with --init: exit 2" 2 gfmd-solve --resume ck3.surf --init s256.surf s256.surf
+check_status "--checkpoint -: exit 2" 2 gfmd-solve -p 0.1 --checkpoint - s256.surf
+gfmd-solve -q --resume s256.surf s256.surf > /dev/null 2>err
+check_rel "a plain surface as checkpoint: exit 1" $? 1 0
+check "a plain surface as checkpoint: named" grep -q 'not a gfmd-solve checkpoint' err
+check_status "a missing checkpoint: exit 1" 1 gfmd-solve -q --resume nothere.surf s256.surf
+summary

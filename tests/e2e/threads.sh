@@ -1,0 +1,83 @@
+#!/bin/sh
+# threads.sh - results do not depend on the thread count: every tool run
+# with -j 1 and -j 2 (and OMP_NUM_THREADS instead of -j) must agree.
+#   surfgen: bit for bit (its reductions are summed in a fixed order and
+#     its FFT plan, ESTIMATE, does the same arithmetic for any thread count).
+#   surfstat: every statistic to 1e-12 relative (OpenMP reductions add in
+#     an order that depends on the thread count; 1e-12 is 10^4 times the
+#     round-off of a sum of 10^4 terms of one sign, and far below any
+#     digit anyone reads).
+#   gfmd-solve (FIRE and CG): the contact area identical or within one
+#     contact point (a point at the contact threshold may flip on
+#     round-off); the gap field within 1e-6 of its maximum, the order of
+#     the solver tolerance (the two methods themselves agree to 1.3e-7 here,
+#     thread counts to 3e-14).
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+
+# data values of a .txt grid, one per line
+values() { grep -v '^#' "$1" | tr -s ' \t' '\n\n' | grep -v '^$'; }
+
+# max |a - b| of two .txt grids, relative to max |a|
+field_diff() {
+	values "$1" >a.val; values "$2" >b.val
+	paste a.val b.val | awk '{ d = $1 - $2; if (d < 0) d = -d; if (d > md) md = d
+		m = $1 < 0 ? -$1 : $1; if (m > mx) mx = m }
+		END { print (mx > 0 ? md / mx : md) }'
+}
+
+# every numeric column of two one-header TSV tables agrees to REL, except
+# the timing columns
+tables_agree() {
+	awk -F'\t' -v rel="$3" 'NR == FNR { if (FNR == 1) for (i = 1; i <= NF; i++) h[i] = $i
+			else a[FNR, 0] = NF
+			for (i = 1; i <= NF; i++) a[FNR, i] = $i; next }
+		FNR == 1 { next }
+		{ for (i = 1; i <= NF; i++) {
+			if (h[i] ~ /seconds/) continue
+			x = a[FNR, i]; y = $i
+			if (x == y) continue
+			if (x + 0 != x || y + 0 != y) { bad++; print h[i] ": " x " vs " y; continue }
+			s = x < 0 ? -x : x; d = x - y; if (d < 0) d = -d
+			if (d > rel * s) { bad++; print h[i] ": " x " vs " y }
+		} }
+		END { exit bad > 0 }' "$1" "$2"
+}
+
+# --- surfgen: bit for bit --------------------------------------------------
+for args in "-n 256x192 --seed 7" "-n 200 -H 0.5 --peklenik 2 --rolloff" \
+    "-n 128 --type harmonic --rms-gradient 0.3" "-n 96 --type eggbox --wavelength 0.25 --rms-height 1"; do
+	surfgen -j 1 $args -o s1.npy && surfgen -j 2 $args -o s2.npy &&
+	    OMP_NUM_THREADS=2 surfgen $args -o s3.npy
+	check "surfgen $args: -j 1 and -j 2 bit for bit" cmp -s s1.npy s2.npy
+	check "surfgen $args: OMP_NUM_THREADS=2 bit for bit" cmp -s s1.npy s3.npy
+done
+
+# --- surfstat: to 1e-12 ----------------------------------------------------
+surfgen -n 256 --seed 3 -H 0.7 -o s.surf
+surfgen -n 256 --type harmonic -o mask_src.surf
+for opt in "" "--fd" "--psd" "--acf" "--by-height 8"; do
+	surfstat -j 1 $opt -o t1.tsv s.surf && surfstat -j 2 $opt -o t2.tsv s.surf
+	check "surfstat $opt: -j 1 and -j 2 agree to 1e-12" tables_agree t1.tsv t2.tsv 1e-12
+done
+# the scalars carry the planning and compute times separately
+surfstat -q -o t.tsv s.surf
+check_range "surfstat: plan_seconds column" "$(col t.tsv plan_seconds)" 0 1e9
+check_range "surfstat: seconds column" "$(col t.tsv seconds)" 0 1e9
+
+# --- gfmd-solve, both methods ----------------------------------------------
+surfgen -n 128 --seed 5 -o h.surf
+for m in fire cg; do
+	for j in 1 2; do
+		gfmd-solve -q -j $j --method $m -p 0.02,0.1 --gap g$j.txt -o r$j.tsv h.surf
+	done
+	for row in 1 2; do
+		n1=$(col r1.tsv n_c $row) n2=$(col r2.tsv n_c $row)
+		check_range "gfmd-solve $m row $row: n_c -j 1 ($n1) vs -j 2 ($n2) within one point" \
+		    "$((n1 - n2))" -1 1
+	done
+	check_range "gfmd-solve $m: gap fields of -j 1 and -j 2 agree to 1e-6" \
+	    "$(field_diff g1.txt g2.txt)" 0 1e-6
+done
+
+summary

@@ -1,0 +1,140 @@
+/* test_fft.c - the FFT layer's thread count, effort policy, FFTW wisdom
+ * and in-place c2r plan. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fft.h"
+#include "testlib.h"
+
+/* -j 0 means OMP_NUM_THREADS when it holds a positive number, else all
+ * cores; an explicit count wins over the variable. */
+static void
+test_threads(void)
+{
+	int all;
+
+	unsetenv("OMP_NUM_THREADS");
+	all = rc_fft_set_threads(0);
+	test_range(all, 1, 4096, "all cores: %d", all);
+	setenv("OMP_NUM_THREADS", "3", 1);
+	test_int(rc_fft_set_threads(0), 3, "OMP_NUM_THREADS=3 honoured");
+	test_int(rc_fft_set_threads(2), 2, "-j 2 wins over OMP_NUM_THREADS");
+	setenv("OMP_NUM_THREADS", "5,2", 1);
+	test_int(rc_fft_set_threads(-1), 5, "OMP_NUM_THREADS=5,2: first level");
+	setenv("OMP_NUM_THREADS", "lots", 1);
+	test_int(rc_fft_set_threads(0), all, "bad OMP_NUM_THREADS: all cores");
+	unsetenv("OMP_NUM_THREADS");
+	rc_fft_set_threads(1);
+}
+
+static void
+test_policy(void)
+{
+	test_int(rc_fft_effort_auto(511, 512, 1e6), RC_FFT_ESTIMATE,
+	    "below 512^2 points: estimate even for a solver");
+	test_int(rc_fft_effort_auto(512, 512, 1e6), RC_FFT_MEASURE,
+	    "512^2 with many transforms: measure");
+	test_int(rc_fft_effort_auto(4096, 64, RC_FFT_MEASURE_PAIRS), RC_FFT_MEASURE,
+	    "262144 points, %g pairs: measure", RC_FFT_MEASURE_PAIRS);
+	test_int(rc_fft_effort_auto(2048, 2048, 5), RC_FFT_WISDOM,
+	    "a one-shot big transform: wisdom or estimate");
+	for (int e = RC_FFT_ESTIMATE; e <= RC_FFT_WISDOM; e++)
+		test_int(rc_fft_effort_parse(rc_fft_effort_name((enum rc_fft_effort)e)),
+		    e, "effort name round trip %d", e);
+	test_int(rc_fft_effort_parse("exhaustive"), -1, "unknown effort");
+}
+
+/* Wisdom written by one "process" makes the next one's MEASURE plan come
+ * from wisdom: after forgetting all wisdom, RC_FFT_WISDOM falls back to
+ * ESTIMATE; after importing the saved file it yields a MEASURE plan. */
+static void
+test_wisdom(void)
+{
+	char path[512], bad[512], missing[512];
+	rc_fft f;
+	rc_err err;
+	FILE *fp;
+	size_t n = 24;
+
+	snprintf(path, sizeof(path), "%s/w.wisdom", test_tmpdir());
+	snprintf(bad, sizeof(bad), "%s/bad.wisdom", test_tmpdir());
+	snprintf(missing, sizeof(missing), "%s/none/w.wisdom", test_tmpdir());
+	fftw_forget_wisdom();
+	test_int(rc_fft_init(&f, n, n, RC_FFT_WISDOM, &err), 0, "plan (wisdom)");
+	test_int(f.effort, RC_FFT_ESTIMATE, "no wisdom yet: estimate");
+	rc_fft_free(&f);
+	test_int(rc_fft_init(&f, n, n, RC_FFT_MEASURE, &err), 0, "plan (measure)");
+	test_int(f.effort, RC_FFT_MEASURE, "measure asked, measure made");
+	rc_fft_free(&f);
+	test_int(rc_fft_wisdom_export(path, &err), 0, "export");
+	fftw_forget_wisdom();
+	test_int(rc_fft_wisdom_import(path, &err), 1, "import what was saved");
+	test_int(rc_fft_init(&f, n, n, RC_FFT_WISDOM, &err), 0, "plan (wisdom)");
+	test_int(f.effort, RC_FFT_MEASURE, "wisdom loaded: a measured plan");
+	rc_fft_free(&f);
+	test_int(rc_fft_wisdom_import(missing, &err), 0, "a missing file: nothing");
+	if ((fp = fopen(bad, "w")) != NULL) {
+		fputs("nx = 3\n", fp);
+		fclose(fp);
+	}
+	test_int(rc_fft_wisdom_import(bad, &err), -1, "not wisdom: an error");
+	test_true(strstr(err.msg, "not FFTW wisdom") != NULL, "message: %s", err.msg);
+	test_int(rc_fft_wisdom_export(missing, &err), -1, "export into no directory");
+	fftw_forget_wisdom();
+}
+
+/* The in-place c2r plan gives the out-of-place transform's values (to
+ * round-off: 1e-13 of the largest value for 30 terms of O(1)), for even
+ * and odd nx. */
+static void
+test_inplace(void)
+{
+	size_t sizes[][2] = { { 16, 12 }, { 15, 7 } };
+	rc_err err;
+
+	for (size_t s = 0; s < 2; s++) {
+		size_t nx = sizes[s][0], ny = sizes[s][1], nxc = nx / 2 + 1;
+		rc_fft f;
+		fftw_complex *buf = fftw_alloc_complex(nxc * ny);
+		double secs = -1, maxd = 0, maxv = 0;
+		enum rc_fft_effort used;
+		fftw_plan p = rc_fft_plan_c2r_inplace(nx, ny, buf, RC_FFT_ESTIMATE, &secs,
+		    &used, &err);
+
+		test_true(p != NULL, "in-place plan %zux%zu", nx, ny);
+		test_range(secs, 0, 60, "plan seconds");
+		test_int(used, RC_FFT_ESTIMATE, "effort used");
+		if (p == NULL || rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, &err) != 0)
+			continue;
+		/* A real field's spectrum, so both transforms see the same
+		 * Hermitian input. */
+		for (size_t k = 0; k < nx * ny; k++)
+			f.real[k] = sin(0.7 * (double)k) + 0.1 * (double)(k % 5);
+		rc_fft_forward(&f);
+		memcpy(buf, f.spec, nxc * ny * sizeof(fftw_complex));
+		rc_fft_backward(&f);
+		fftw_execute(p);
+		for (size_t j = 0; j < ny; j++)
+			for (size_t i = 0; i < nx; i++) {
+				double a = f.real[j * nx + i], b = ((double *)buf)[j * 2 * nxc + i];
+				maxd = fmax(maxd, fabs(a - b));
+				maxv = fmax(maxv, fabs(a));
+			}
+		test_abs(maxd / maxv, 0, 1e-13, "in place = out of place %zux%zu", nx, ny);
+		rc_fft_free(&f);
+		fftw_destroy_plan(p);
+		fftw_free(buf);
+	}
+}
+
+int
+main(void)
+{
+	test_threads();
+	test_policy();
+	test_wisdom();
+	test_inplace();
+	return test_summary();
+}
