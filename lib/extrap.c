@@ -8,6 +8,7 @@
  */
 #include "extrap.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -334,6 +335,44 @@ out:
 	free(eps);
 	free(idx);
 	return rc;
+}
+
+int
+rc_extrap_parse(const char *text, size_t maxterms, rc_extrap_opts *e,
+    rc_err *err)
+{
+	double k[RC_EXTRAP_MAXTERMS];
+	size_t n = 0;
+	const char *p = text;
+	char *end;
+
+	if (strcmp(text, "auto") == 0) {
+		e->auto_order = 1;
+		e->nterms = 1;
+		e->exponent[0] = 1;
+		return 0;
+	}
+	if (maxterms > RC_EXTRAP_MAXTERMS)
+		maxterms = RC_EXTRAP_MAXTERMS;
+	for (;;) {
+		if (n == maxterms)
+			return rc_seterr(err, "at most %zu exponent%s", maxterms,
+			    maxterms == 1 ? "" : "s");
+		k[n] = strtod(p, &end);
+		if (end == p || (*end != ',' && *end != '\0') || isspace((unsigned char)*p))
+			return rc_seterr(err, "want auto or comma-separated numbers");
+		if (!(k[n] > 0 && k[n] <= 10) || (n > 0 && !(k[n] > k[n - 1])))
+			return rc_seterr(err, "exponents must be in (0, 10] and "
+			    "increasing");
+		n++;
+		if (*end == '\0')
+			break;
+		p = end + 1;
+	}
+	e->auto_order = 0;
+	e->nterms = n;
+	memcpy(e->exponent, k, n * sizeof(*k));
+	return 0;
 }
 
 double

@@ -37,6 +37,12 @@ typedef struct rc_fit {
 	size_t nused;		/* points the estimate depends on */
 } rc_fit;
 
+/* A model from text: "auto", or at most maxterms comma-separated
+ * exponents, increasing, in (0, 10].  e is unchanged on failure; the kind
+ * is kept. */
+int rc_extrap_parse(const char *text, size_t maxterms, rc_extrap_opts *e,
+    rc_err *err);
+
 /* y0 from n points (eps_i > 0, distinct, any order; y_i finite).
  * err: with more points than the model needs, the difference between this
  * estimate and the same model through the next-coarser points (FINEST), or

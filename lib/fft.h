@@ -27,15 +27,17 @@ enum rc_fft_effort {
 				 * for planning; for one-shot transforms */
 };
 
-/* Effort policy (times measured on this project's 2-core test machine,
- * see roughcontact(7)): MEASURE planning of an r2c + c2r pair costs 1 to
- * 4 s at 512^2 .. 4096^2, i.e. 15 to 200 transform pairs, and gains 0 to
- * 60% per transform; below 512^2 the transforms take milliseconds and
- * planning never pays back.  So: ESTIMATE below RC_FFT_MEASURE_POINTS;
- * above, MEASURE when the caller expects at least RC_FFT_MEASURE_PAIRS
- * transform pairs (a solver), else RC_FFT_WISDOM (a plan from wisdom, which
- * costs nothing to make, or ESTIMATE). */
-#define RC_FFT_MEASURE_POINTS ((size_t)512 * 512)
+/* Effort policy, from timings of an r2c + c2r pair on this project's
+ * 2-core test machine (roughcontact(7), "Running large problems"): MEASURE
+ * planning costs 1 to 22 s at 512^2 .. 4096^2 (15 to 700 pairs); the plans
+ * it finds are no faster than ESTIMATE's at 512^2 and 1024^2 (within the
+ * noise, 5%), 15-17% faster at 2048^2 and 28% at 4096^2.  So: ESTIMATE
+ * below RC_FFT_MEASURE_POINTS (1024^2, where a solver's thousands of
+ * transforms make a few seconds of planning negligible, and where other
+ * CPUs may gain more); above, MEASURE when the caller expects at least
+ * RC_FFT_MEASURE_PAIRS transform pairs (a solver), else RC_FFT_WISDOM (a
+ * plan from wisdom, which costs nothing to make, or ESTIMATE). */
+#define RC_FFT_MEASURE_POINTS ((size_t)1024 * 1024)
 #define RC_FFT_MEASURE_PAIRS 200.0
 enum rc_fft_effort rc_fft_effort_auto(size_t nx, size_t ny, double pairs);
 /* "estimate", "measure", "patient", "wisdom"; parse returns -1 if unknown. */

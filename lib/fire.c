@@ -36,12 +36,12 @@
  * stiffness (load per mean height) grows with the contact.  A single
  * patch of area a_r L^2 in a half space has stiffness ~ E* sqrt(a_r) L per
  * cell, i.e. ~ k_min sqrt(a_r) per area (k_min = pi E* / L, the softest
- * mode).  So m_0 = M0_SCALE k_min sqrt(max(n_c, 1) / N), updated every
- * step from the current contact count (it changes the rate, not the fixed
- * point).  Measured on 128^2 and 512^2 self-affine surfaces (H = 0.3 and
- * 0.8, p* = 0.002 ... 0.2): a fixed m_0 = k_min takes 33 ... 113
- * iterations at 256^2 (slowest at small p*; 1159 with m_0 = 10 k_min);
- * the adaptive m_0 with M0_SCALE = 2 takes 31 ... 64.
+ * mode, L the longer side).  So m_0 = M0_SCALE k_min sqrt(max(n_c, 1) / N),
+ * updated every step from the current contact count (it changes the
+ * rate, not the fixed point).  Measured (H = 0.3 and 0.8): a fixed
+ * m_0 = k_min takes 33 ... 113 iterations at 256^2 for p* = 0.002 ... 0.5,
+ * the most at small p* (1159 with m_0 = 10 k_min); the adaptive m_0 with
+ * M0_SCALE = 2 takes 31 ... 64 at 128^2 and 512^2 for p* = 0.002 ... 0.2.
  *
  * Parameters (time in units of 1/omega, omega = 1 the common mode
  * frequency; tuned on 256^2, p* = 0.05, H = 0.8, checked at 128^2 ...
@@ -60,8 +60,8 @@
  *   F_ALPHA     0.99  mixing decay per positive-power step past N_MIN
  *   M0_SCALE    2     mean-mode mass (above)
  * Cost: two FFT pairs and three O(N) passes per iteration.  The iteration
- * count at tol 1e-6 is nearly independent of N (256^2: 38, 512^2: 42,
- * 1024^2: 46 at p* = 0.05; the uniform real-space mass this replaces took
+ * count at tol 1e-6 is nearly independent of N (256^2: 43, 512^2: 41,
+ * 1024^2: 38 at p* = 0.05; the uniform real-space mass this replaces took
  * 262, 299, 467 with one pair each, growing like sqrt(n)).  Why not one
  * pair: step 3 needs f_eff, which needs K u of this step at the contact
  * points; tracking K u by linearity instead needs K of the sparse wall

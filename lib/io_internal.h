@@ -83,6 +83,13 @@ rc_grid *rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 rc_grid *rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 rc_grid *rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 int rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err);
+/* The .surf header alone, for MPI-IO (lib/mpi/): write g's header for a
+ * grid of ny rows (g's own values are not written); read a header from
+ * fp into a grid of nx x 1 (values zero), the rows into *ny and the byte
+ * offset of the values into *data_offset. */
+int rc_surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err);
+rc_grid *rc_surf_read_header(FILE *fp, size_t *ny, size_t *data_offset,
+    rc_err *err);
 int rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err);

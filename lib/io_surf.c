@@ -46,8 +46,10 @@ addkv(struct buf *b, const char *key, const char *val)
 	add(b, "\n");
 }
 
-int
-rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
+/* The header for ny rows (g->ny unless only the header is written), then
+ * g's values if values is set. */
+static int
+write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 {
 	struct buf head = { 0 }, tail = { 0 };
 	char num[64], line[96];
@@ -58,7 +60,7 @@ rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	    "data_offset on; see surf(5)\n");
 	snprintf(num, sizeof(num), "%zu", g->nx);
 	addkv(&head, "nx", num);
-	snprintf(num, sizeof(num), "%zu", g->ny);
+	snprintf(num, sizeof(num), "%zu", ny);
 	addkv(&head, "ny", num);
 	rc_format_double(num, sizeof(num), g->lx);
 	addkv(&head, "lx", num);
@@ -102,7 +104,7 @@ rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	    rc_io_write(fp, "        ", pad, err) != 0 ||
 	    rc_io_write(fp, "\n", 1, err) != 0)
 		goto out;
-	r = rc_io_write_values(fp, g->z, rc_grid_size(g), 8, err);
+	r = values ? rc_io_write_values(fp, g->z, rc_grid_size(g), 8, err) : 0;
 out:
 	free(head.s);
 	free(tail.s);
@@ -149,8 +151,10 @@ static const char *keys[K_N] = {
 	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset"
 };
 
-rc_grid *
-rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+/* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
+ * zeros carrying the header's fields, the row count into *header_ny. */
+static rc_grid *
+read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 {
 	char *line = NULL, *vals[K_N] = { 0 }, *key, *val, q[64];
 	char **hist = NULL, **mkey = NULL, **mval = NULL;
@@ -160,7 +164,6 @@ rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	rc_grid *g = NULL;
 	int r, kind = 0, done = 0;
 
-	(void)o;
 	if ((line = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
 		return NULL;
 	while (!done) {
@@ -319,7 +322,11 @@ rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	}
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		goto fail;
-	if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
+	if (header_ny != NULL) {
+		*header_ny = ny;
+		if ((g = rc_grid_new(nx, 1, lx, ly, err)) == NULL)
+			goto fail;
+	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
 		goto fail;
 	g->kind = (enum rc_kind)kind;
 	if (vals[K_UNIT] != NULL)
@@ -347,5 +354,36 @@ out:
 	free(mkey);
 	free(mval);
 	free(line);
+	return g;
+}
+
+int
+rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
+{
+	return write_surf(g, g->ny, 1, fp, err);
+}
+
+int
+rc_surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err)
+{
+	return write_surf(g, ny, 0, fp, err);
+}
+
+rc_grid *
+rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+{
+	(void)o;
+	return read_surf(in, NULL, err);
+}
+
+rc_grid *
+rc_surf_read_header(FILE *fp, size_t *ny, size_t *data_offset, rc_err *err)
+{
+	rc_in in;
+	rc_grid *g;
+
+	rc_in_init(&in, fp);
+	if ((g = read_surf(&in, ny, err)) != NULL)
+		*data_offset = (size_t)in.consumed;
 	return g;
 }

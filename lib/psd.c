@@ -222,28 +222,37 @@ rc_psd_moments_x(const rc_grid *g, rc_fft *fft, double *m0, double *m2,
     double *m4, rc_err *err)
 {
 	rc_fft own, *f;
-	double s0 = 0, s2 = 0, s4 = 0;
+	double part[NPART][3];
 	double dq2 = 4 * M_PI * M_PI / (g->lx * g->ly);
 
 	if (forward(g, fft, &own, &f, 0, err) != 0)
 		return -1;
-	#pragma omp parallel for reduction(+:s0,s2,s4) schedule(static)
-	for (size_t j = 0; j < g->ny; j++)
-		for (size_t i = 0; i < f->nxc; i++) {
-			double w, c, qx, dqx;
-			if (i == 0 && j == 0)
-				continue;
-			w = rc_fft_weight(i, g->nx);
-			c = w * mode_c(g, f, i, j) * dq2;
-			qx = rc_wavenumber(i, g->nx, g->lx);
-			dqx = rc_deriv_wavenumber(i, g->nx, g->lx);
-			s0 += c;
-			s2 += dqx * dqx * c;
-			s4 += qx * qx * qx * qx * c;
-		}
-	*m0 = s0;
-	*m2 = s2;
-	*m4 = s4;
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double s0 = 0, s2 = 0, s4 = 0;
+		for (size_t j = part_start(p, g->ny); j < part_start(p + 1, g->ny); j++)
+			for (size_t i = 0; i < f->nxc; i++) {
+				double w, c, qx, dqx;
+				if (i == 0 && j == 0)
+					continue;
+				w = rc_fft_weight(i, g->nx);
+				c = w * mode_c(g, f, i, j) * dq2;
+				qx = rc_wavenumber(i, g->nx, g->lx);
+				dqx = rc_deriv_wavenumber(i, g->nx, g->lx);
+				s0 += c;
+				s2 += dqx * dqx * c;
+				s4 += qx * qx * qx * qx * c;
+			}
+		part[p][0] = s0;
+		part[p][1] = s2;
+		part[p][2] = s4;
+	}
+	*m0 = *m2 = *m4 = 0;
+	for (int p = 0; p < NPART; p++) {
+		*m0 += part[p][0];
+		*m2 += part[p][1];
+		*m4 += part[p][2];
+	}
 	rc_fft_free(&own);
 	return 0;
 }

@@ -17,12 +17,13 @@
  * Default tolerance: measured on a 256^2 rc_synth surface (H = 0.8,
  * lambda_r = L/2, lambda_s = L/64, gbar = 1, seed 1, p = 0.05 E* gbar,
  * a_r = 0.1093, 7163 contact points) against a reference solve at tol
- * 1e-13 (FIRE; CG's floor from round-off is ~2e-11):
+ * 1e-13 (FIRE, 93 iterations; CG's floor from round-off is ~2e-11):
  *   tol     FIRE iterations, |a_r - ref|/ref    CG iterations, same
- *   1e-3    156   1.4e-4 (one point)             52   0
- *   1e-4    195   0                              59   0
- *   1e-6    262   0                              73   0
- *   1e-9    355   0                              94   0
+ *   1e-3     23   1.4e-4 (one point)             52   0
+ *   1e-4     29   0                              59   0
+ *   1e-6     43   0                              73   0
+ *   1e-9     65   0                              94   0
+ * (FIRE iterations cost two FFT pairs, CG's one or two: fire.c, pkcg.c.)
  * The default 1e-6 leaves a margin of two decades over the first
  * tolerance at which every contact point is right.
  */

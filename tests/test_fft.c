@@ -32,12 +32,12 @@ test_threads(void)
 static void
 test_policy(void)
 {
-	test_int(rc_fft_effort_auto(511, 512, 1e6), RC_FFT_ESTIMATE,
-	    "below 512^2 points: estimate even for a solver");
-	test_int(rc_fft_effort_auto(512, 512, 1e6), RC_FFT_MEASURE,
-	    "512^2 with many transforms: measure");
-	test_int(rc_fft_effort_auto(4096, 64, RC_FFT_MEASURE_PAIRS), RC_FFT_MEASURE,
-	    "262144 points, %g pairs: measure", RC_FFT_MEASURE_PAIRS);
+	test_int(rc_fft_effort_auto(1023, 1024, 1e6), RC_FFT_ESTIMATE,
+	    "below 1024^2 points: estimate even for a solver");
+	test_int(rc_fft_effort_auto(1024, 1024, 1e6), RC_FFT_MEASURE,
+	    "1024^2 with many transforms: measure");
+	test_int(rc_fft_effort_auto(16384, 64, RC_FFT_MEASURE_PAIRS), RC_FFT_MEASURE,
+	    "2^20 points, %g pairs: measure", RC_FFT_MEASURE_PAIRS);
 	test_int(rc_fft_effort_auto(2048, 2048, 5), RC_FFT_WISDOM,
 	    "a one-shot big transform: wisdom or estimate");
 	for (int e = RC_FFT_ESTIMATE; e <= RC_FFT_WISDOM; e++)

@@ -543,7 +543,9 @@ main(int argc, char **argv)
 		rc_solve_result res;
 		rc_contact_stats st;
 		double p = nreduced ? reduced[k] * modulus * gbar : absolute[k];
-		double p_star = gbar > 0 ? p / (modulus * gbar) : NAN;
+		/* Echo a requested p* exactly: p/(E* gbar) rounds. */
+		double p_star = nreduced ? reduced[k] :
+		    gbar > 0 ? p / (modulus * gbar) : NAN;
 		double seconds = 0;
 		long iterations = k == first ? resumed_iterations : 0;
 		int r;

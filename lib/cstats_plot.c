@@ -1,0 +1,167 @@
+/* cstats_plot.c - the gnuplot script of contact-stats: kappa(p*) with
+ * error bars, one curve per group, Persson's and BGT's values as lines;
+ * written as a script, or run through gnuplot into a PNG. */
+#include "cstats.h"
+
+#include <errno.h>
+#include <math.h>
+#include <spawn.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "atomic.h"
+
+extern char **environ;
+
+/* s as the inside of a gnuplot single-quoted string (a quote doubled). */
+static void
+put_quoted(FILE *fp, const char *s)
+{
+	for (; *s; s++) {
+		if (*s == '\'')
+			fputc('\'', fp);
+		fputc(*s, fp);
+	}
+}
+
+int
+rc_cstats_gnuplot(FILE *fp, const rc_cstats *res, const char *script,
+    const char *png, rc_err *err)
+{
+	double pmin = INFINITY, pmax = 0;
+
+	for (const char *p = png ? png : ""; *p; p++)
+		if ((unsigned char)*p < 0x20 || *p == 0x7f)
+			return rc_seterr(err, "%s: a control character in the name",
+			    png);
+	if (res->nrows == 0)
+		return rc_seterr(err, "no rows to plot");
+	fprintf(fp, "# Written by contact-stats: kappa(p*) with error bars.\n"
+	    "# Run: gnuplot %s\n"
+	    "set terminal png size 900,650\n", script);
+	if (png != NULL) {
+		fputs("set output '", fp);
+		put_quoted(fp, png);
+		fputs("'\n", fp);
+	}
+	fprintf(fp, "set logscale x\n"
+	    "set xlabel 'p*'\n"
+	    "set ylabel 'kappa'\n"
+	    "set key outside right\n"
+	    "set grid\n");
+	for (size_t i = 0; i < res->nrows; i++) {
+		pmin = fmin(pmin, res->point[i].p_star);
+		pmax = fmax(pmax, res->point[i].p_star);
+	}
+	/* reference lines across the whole range, a margin around the data */
+	fprintf(fp, "set xrange [%.6g:%.6g]\n", pmin / 1.5, pmax * 1.5);
+	for (size_t k = 0, i = 0; k < res->ncurves; k++) {
+		fprintf(fp, "$curve%zu << EOD\n# p_star kappa kappa_err\n", k);
+		for (; i < res->nrows && res->point[i].curve == k; i++) {
+			const rc_cstats_point *p = &res->point[i];
+			if (isfinite(p->kappa) && isfinite(p->kappa_err))
+				fprintf(fp, "%.10g %.10g %.10g\n", p->p_star, p->kappa,
+				    p->kappa_err);
+		}
+		fprintf(fp, "EOD\n");
+	}
+	fprintf(fp, "plot \\\n");
+	for (size_t k = 0; k < res->ncurves; k++)
+		fprintf(fp, "  $curve%zu using 1:2:3 with yerrorlines title '%s', \\\n",
+		    k, res->label[k]);
+	fprintf(fp, "  sqrt(8/pi) dashtype 2 title 'Persson sqrt(8/pi)', \\\n"
+	    "  sqrt(2*pi) dashtype 3 title 'BGT sqrt(2 pi)'\n");
+	if (ferror(fp))
+		return rc_seterr(err, "writing the gnuplot script: %s",
+		    strerror(errno));
+	return 0;
+}
+
+int
+rc_cstats_gnuplot_write(const rc_cstats *res, const char *path, rc_err *err)
+{
+	const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+	const char *dot = strrchr(base, '.');
+	size_t stem = dot && dot > base ? (size_t)(dot - path) : strlen(path);
+	char *png = malloc(stem + 10);
+	rc_atomic out;
+	int rc = -1;
+
+	if (png == NULL)
+		return rc_seterr(err, "out of memory");
+	if (rc_is_stdio(path))
+		strcpy(png, "kappa.png");
+	else
+		snprintf(png, stem + 10, "%.*s.png", (int)stem, path);
+	if (rc_atomic_open(&out, path, err) == 0) {
+		if (rc_cstats_gnuplot(out.fp, res, rc_is_stdio(path) ? "-" : path,
+		    png, err) != 0)
+			rc_atomic_abort(&out);
+		else
+			rc = rc_atomic_commit(&out, err);
+	}
+	free(png);
+	return rc;
+}
+
+/* The script goes to a temporary file; gnuplot writes the PNG to the
+ * temporary name rc_atomic made beside path (which rc_atomic_commit then
+ * fsyncs and renames), or, for standard output, to its own standard
+ * output. */
+int
+rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
+{
+	const char *dir = getenv("TMPDIR");
+	char script[4096];
+	char *argv[] = { "gnuplot", script, NULL };
+	rc_atomic out;
+	FILE *fp = NULL;
+	pid_t pid;
+	int fd, st = 0, rc;
+
+	snprintf(script, sizeof(script), "%s/contact-stats.gp.XXXXXX",
+	    dir && *dir ? dir : "/tmp");
+	if ((fd = mkstemp(script)) < 0)
+		return rc_seterr(err, "temporary script %s: %s", script,
+		    strerror(errno));
+	if ((fp = fdopen(fd, "w")) == NULL) {
+		rc_seterr(err, "temporary script %s: %s", script, strerror(errno));
+		close(fd);
+		unlink(script);
+		return -1;
+	}
+	if (rc_atomic_open(&out, path, err) != 0) {
+		fclose(fp);
+		unlink(script);
+		return -1;
+	}
+	rc = rc_cstats_gnuplot(fp, res, script, out.tmp, err);
+	if (fclose(fp) != 0 && rc == 0)
+		rc = rc_seterr(err, "temporary script %s: %s", script,
+		    strerror(errno));
+	if (rc != 0) {
+		unlink(script);
+		rc_atomic_abort(&out);
+		return -1;
+	}
+	fflush(stdout);
+	rc = posix_spawnp(&pid, "gnuplot", NULL, NULL, argv, environ);
+	if (rc == 0 && waitpid(pid, &st, 0) < 0)
+		rc = errno;
+	unlink(script);
+	if (rc == ENOENT) {
+		rc_atomic_abort(&out);
+		return rc_seterr(err, "gnuplot not found; use --gnuplot FILE to get "
+		    "the script");
+	}
+	if (rc != 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
+		rc_atomic_abort(&out);
+		if (rc != 0)
+			return rc_seterr(err, "running gnuplot: %s", strerror(rc));
+		return rc_seterr(err, "%s: gnuplot failed (exit status %d)", path,
+		    WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+	}
+	return rc_atomic_commit(&out, err);
+}
