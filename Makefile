@@ -133,4 +133,32 @@ build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/rows.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) -lm
 
+# make MPI=1: also the MPI builds of surfgen and gfmd-solve (lib/mpi/,
+# tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin
+# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/.  lib/fire.c,
+# lib/elastic.c and lib/solver.c are compiled again with -DRC_MPI; the rest
+# of the library is the serial one.  make check-mpi tests them against the
+# serial tools with 1, 2 and 3 ranks (tests/mpi/check.sh).
+MPICC ?= mpicc
+MPI_O = build/mpi
+MPI_BIN = build/mpi/bin
+MPI_TOOLS = $(MPI_BIN)/surfgen $(MPI_BIN)/gfmd-solve
+MPI_LIB_OBJ = $(addprefix $(MPI_O)/lib/,fire.o elastic.o solver.o) \
+	$(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
+MPI_TOOL_OBJ = $(MPI_O)/tools/mpi/mpitool.o
+.PHONY: check-mpi
+check-mpi:
+	@$(MAKE) -s MPI=1 $(TOOLS) $(MPI_TOOLS)
+	@sh tests/mpi/check.sh $(BIN) $(MPI_BIN)
+ifeq ($(MPI),1)
+all: $(MPI_TOOLS)
+$(MPI_O)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(MPICC) $(ALL_CFLAGS) -DRC_MPI -MMD -MP -c -o $@ $<
+$(MPI_BIN)/%: $(MPI_O)/tools/mpi/%.o $(MPI_TOOL_OBJ) $(MPI_LIB_OBJ) $(COMMON_OBJ) $(LIB)
+	@mkdir -p $(dir $@)
+	$(MPICC) $(ALL_LDFLAGS) -o $@ $^ -lfftw3_mpi $(LDLIBS)
+-include $(MPI_LIB_OBJ:.o=.d) $(MPI_TOOL_OBJ:.o=.d) $(MPI_TOOLS:$(MPI_BIN)/%=$(MPI_O)/tools/mpi/%.d)
+endif
+
 -include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d)

@@ -77,6 +77,16 @@
 #include <math.h>
 #include <string.h>
 
+/* The MPI build (make MPI=1) runs this file on each rank's rows: s->n is
+ * the local point count, s->el.n the global one, and every sum over points
+ * is completed by an MPI_Allreduce (lib/mpi/decomp.h). */
+#ifdef RC_MPI
+#include "mpi/decomp.h"
+#define POINTS(s)	((double)(s)->el.n)
+#else
+#define POINTS(s)	((double)(s)->n)
+#endif
+
 #define DT_START	1.0
 #define DT_MAX		2.0
 #define N_MIN		1
@@ -127,6 +137,17 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power)
 		}
 		pw += f[k] * v[k];
 	}
+#ifdef RC_MPI
+	{
+		double sums[4] = { sum_d2, sum_s, (double)on, pw };
+
+		rc_mpi_sum(sums, 4);
+		sum_d2 = sums[0];
+		sum_s = sums[1];
+		on = (size_t)sums[2];
+		pw = sums[3];
+	}
+#endif
 	*n_contact = on;
 	*power = pw;
 	return rc__residual(s, p, sum_d2, sum_s);
@@ -165,7 +186,10 @@ contact_pressure(rc_solver *s, double p)
 		sum += s->u[k] * s->sigma[k];
 		s->sigma[k] = s->contact[k] ? p + s->sigma[k] : 0;
 	}
-	return 0.5 * sum / (double)s->n;
+#ifdef RC_MPI
+	rc_mpi_sum(&sum, 1);
+#endif
+	return 0.5 * sum / POINTS(s);
 }
 
 int
@@ -186,6 +210,9 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		for (k = 0; k < n; k++)
 			if (h[k] > top)
 				top = h[k];
+#ifdef RC_MPI
+		rc_mpi_max(&top, 1);
+#endif
 		for (k = 0; k < n; k++)
 			u[k] = top;
 		s->have_u = 1;
@@ -209,9 +236,9 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			break;
 		if (s->opts.progress && it % PROGRESS_EVERY == 0)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
-			    (double)n_contact / (double)n);
+			    (double)n_contact / POINTS(s));
 		mass0 = M0_SCALE * s->el.k_min *
-		    sqrt((double)(n_contact > 0 ? n_contact : 1) / (double)n);
+		    sqrt((double)(n_contact > 0 ? n_contact : 1) / POINTS(s));
 		a = mass_weighted(s, mass0);
 		restart = !(power > 0);
 		if (!restart) {
@@ -236,6 +263,16 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			av += a[k] * v[k];
 			vv += v[k] * v[k];
 		}
+#ifdef RC_MPI
+		{
+			double sums[3] = { aa, av, vv };
+
+			rc_mpi_sum(sums, 3);
+			aa = sums[0];
+			av = sums[1];
+			vv = sums[2];
+		}
+#endif
 		mix_v = 1;
 		mix_a = 0;
 		if (aa > 0) {

@@ -34,6 +34,10 @@
 #include <string.h>
 #include <time.h>
 
+#ifdef RC_MPI
+#include "mpi/decomp.h"
+#endif
+
 void
 rc_solver_defaults(rc_solver_opts *o)
 {
@@ -188,7 +192,11 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 double
 rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 {
+#ifdef RC_MPI
+	double n = (double)s->el.n;	/* the sums are global (fire.c) */
+#else
 	double n = (double)s->n;
+#endif
 	double force = sqrt(sum_d2 / n) / p, load = fabs(sum_sigma / n - p) / p;
 
 	return force > load ? force : load;
@@ -232,7 +240,12 @@ rc_solver_mean_gap(const rc_solver *s)
 #pragma omp parallel for reduction(+:sum) schedule(static)
 	for (k = 0; k < s->n; k++)
 		sum += s->u[k] - s->height[k];
+#ifdef RC_MPI
+	rc_mpi_sum(&sum, 1);
+	return sum / (double)s->el.n;
+#else
 	return sum / (double)s->n;
+#endif
 }
 
 size_t

@@ -253,12 +253,13 @@ signed_index(size_t k, size_t n)
 	return k <= n / 2 ? (long)k : (long)k - (long)n;
 }
 
-/* Fill spec (ny x nxc, half-complex) with the unnormalised self-affine
- * modes; sums[j] receives row j's contribution to sum over the full plane
- * of weight * |a|^2, weight q^2 (gradient) or 1 (height). */
+/* Fill spec (rows j0 ... j0 + rows - 1 of the ny x nxc half-complex
+ * modes) with the unnormalised self-affine modes; sums[j - j0] receives
+ * row j's contribution to sum over the full plane of weight * |a|^2,
+ * weight q^2 (gradient) or 1 (height). */
 static void
-fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
-    double *sums, int by_gradient)
+fill_rows(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
+    size_t j0, size_t rows, double *sums, int by_gradient)
 {
 	double qr = 2 * M_PI / rc_synth_lambda_r(p);
 	double qs = 2 * M_PI / rc_synth_lambda_s(p);
@@ -266,8 +267,8 @@ fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
 	long jy;
 
 #pragma omp parallel for schedule(static)
-	for (jy = 0; jy < (long)p->ny; jy++) {
-		size_t j = (size_t)jy;
+	for (jy = 0; jy < (long)rows; jy++) {
+		size_t j = j0 + (size_t)jy;
 		long ky = signed_index(j, p->ny);
 		double qy = rc_wavenumber(j, p->ny, p->ly), row = 0;
 		int nyq_row = rc_is_nyquist(j, p->ny);
@@ -283,7 +284,7 @@ fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
 			/* Nyquist modes cannot carry a random phase (they
 			 * are their own mirror) and q = 0 is the mean. */
 			if (nyq_row || rc_is_nyquist(i, p->nx) || (kx == 0 && ky == 0)) {
-				spec[j * nxc + i] = 0;
+				spec[(size_t)jy * nxc + i] = 0;
 				continue;
 			}
 			amp = spectrum_amplitude(g2 * qx * qx + qy * qy / g2,
@@ -303,10 +304,24 @@ fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
 				row += rc_fft_weight(i, p->nx) * amp * amp *
 				    (by_gradient ? q2 : 1.0);
 			}
-			spec[j * nxc + i] = a;
+			spec[(size_t)jy * nxc + i] = a;
 		}
-		sums[j] = row;
+		sums[jy] = row;
 	}
+}
+
+static void
+fill_selfaffine(const rc_synth_params *p, fftw_complex *spec, size_t nxc,
+    double *sums, int by_gradient)
+{
+	fill_rows(p, spec, nxc, 0, p->ny, sums, by_gradient);
+}
+
+void
+rc_synth_selfaffine_rows(const rc_synth_params *p, fftw_complex *spec,
+    size_t j0, size_t rows, double *sums)
+{
+	fill_rows(p, spec, p->nx / 2 + 1, j0, rows, sums, !(p->rms_height > 0));
 }
 
 /* The surface in place: the half-complex modes are filled into one buffer
@@ -383,27 +398,35 @@ periodic_offset(double x, double l)
 	return d - l * nearbyint(d / l);
 }
 
+/* Rows j0 ... j0 + rows - 1 of the harmonic indenter into z (nx apart). */
 static void
-make_harmonic(const rc_synth_params *p, rc_grid *g)
+harmonic_rows(const rc_synth_params *p, double *z, size_t j0, size_t rows)
 {
 	double n = p->exponent, r0 = p->radius;
 	long jy;
 
 #pragma omp parallel for schedule(static)
-	for (jy = 0; jy < (long)p->ny; jy++) {
-		size_t j = (size_t)jy;
+	for (jy = 0; jy < (long)rows; jy++) {
+		size_t j = j0 + (size_t)jy;
 		double dy = periodic_offset(p->ly * (double)j / (double)p->ny, p->ly);
 		for (size_t i = 0; i < p->nx; i++) {
 			double dx = periodic_offset(p->lx * (double)i / (double)p->nx,
 			    p->lx);
 			double r = hypot(dx, dy);
-			g->z[j * p->nx + i] = -(r0 / n) * pow(r / r0, n);
+			z[(size_t)jy * p->nx + i] = -(r0 / n) * pow(r / r0, n);
 		}
 	}
 }
 
 static void
-make_waves(const rc_synth_params *p, rc_grid *g)
+make_harmonic(const rc_synth_params *p, rc_grid *g)
+{
+	harmonic_rows(p, g->z, 0, p->ny);
+}
+
+/* Rows j0 ... j0 + rows - 1 of the sine or egg-box surface into z. */
+static void
+wave_rows(const rc_synth_params *p, double *z, size_t j0, size_t rows)
 {
 	double w = rc_synth_wavelength(p);
 	/* Whole periods per cell: the phase of point i is 2 pi m i / nx
@@ -412,15 +435,42 @@ make_waves(const rc_synth_params *p, rc_grid *g)
 	long jy;
 
 #pragma omp parallel for schedule(static)
-	for (jy = 0; jy < (long)p->ny; jy++) {
-		size_t j = (size_t)jy;
+	for (jy = 0; jy < (long)rows; jy++) {
+		size_t j = j0 + (size_t)jy;
 		double cy = p->type == RC_SURF_EGGBOX ?
 		    cos(2 * M_PI * fmod(my * (double)j, (double)p->ny) / (double)p->ny) : 1;
 		for (size_t i = 0; i < p->nx; i++) {
 			double cx = cos(2 * M_PI * fmod(mx * (double)i, (double)p->nx) /
 			    (double)p->nx);
-			g->z[j * p->nx + i] = p->amplitude * cx * cy;
+			z[(size_t)jy * p->nx + i] = p->amplitude * cx * cy;
 		}
+	}
+}
+
+static void
+make_waves(const rc_synth_params *p, rc_grid *g)
+{
+	wave_rows(p, g->z, 0, p->ny);
+}
+
+int
+rc_synth_pointwise_rows(const rc_synth_params *p, double *z, size_t j0,
+    size_t rows, rc_err *err)
+{
+	switch (p->type) {
+	case RC_SURF_HARMONIC:
+		harmonic_rows(p, z, j0, rows);
+		return 0;
+	case RC_SURF_SINE:
+	case RC_SURF_EGGBOX:
+		wave_rows(p, z, j0, rows);
+		return 0;
+	case RC_SURF_FLAT:
+		memset(z, 0, rows * p->nx * sizeof(double));
+		return 0;
+	default:
+		return rc_seterr(err, "internal: %s is not a pointwise surface type",
+		    rc_surface_type_name(p->type));
 	}
 }
 
@@ -491,6 +541,13 @@ write_meta(const rc_synth_params *p, rc_grid *g, double scale, rc_err *err)
 	else if (p->rms_height > 0)
 		bad |= rc_grid_meta_setd(g, "rms_height", p->rms_height, err);
 	return bad ? -1 : 0;
+}
+
+int
+rc_synth_meta(const rc_synth_params *p, rc_grid *g, double scale, rc_err *err)
+{
+	g->kind = RC_KIND_HEIGHT;
+	return write_meta(p, g, scale, err);
 }
 
 rc_grid *

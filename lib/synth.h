@@ -80,6 +80,21 @@ rc_grid *rc_synth_planned(const rc_synth_params *p, enum rc_fft_effort effort,
 double rc_synth_lambda_r(const rc_synth_params *p);
 double rc_synth_lambda_s(const rc_synth_params *p);
 double rc_synth_wavelength(const rc_synth_params *p);
+/* Rows j0 ... j0 + rows - 1 of the unnormalised self-affine spectrum (nx/2+1
+ * complex values per row, as rc_synth fills them before scaling), for a
+ * distributed transform (make MPI=1); sums[j - j0] gets row j's share of
+ * the normalisation sum (full plane of weight |a|^2, weight q^2 for the rms
+ * gradient, 1 if rms_height is set): scale by target / sqrt(total). */
+void rc_synth_selfaffine_rows(const rc_synth_params *p, fftw_complex *spec,
+    size_t j0, size_t rows, double *sums);
+/* Rows j0 ... j0 + rows - 1 (nx values each, into z) of a harmonic, sine,
+ * egg-box or flat surface before any normalisation (make MPI=1). */
+int rc_synth_pointwise_rows(const rc_synth_params *p, double *z, size_t j0,
+    size_t rows, rc_err *err);
+/* The kind and generation metadata rc_synth gives the surface, set on g,
+ * scale the factor the normalisation applied to a pointwise type (1 for
+ * selfaffine): for a header written without the values (make MPI=1). */
+int rc_synth_meta(const rc_synth_params *p, rc_grid *g, double scale, rc_err *err);
 /* The hash that seeds mode (kx, ky)'s random stream (exposed for tests). */
 uint64_t rc_synth_mode_key(uint64_t seed, long kx, long ky);
 

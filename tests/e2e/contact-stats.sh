@@ -204,4 +204,49 @@ if command -v gnuplot >/dev/null 2>&1; then
 	gnuplot k.gp 2>/dev/null
 	check "gnuplot makes a PNG" test "$(od -An -tx1 -N4 k.png 2>/dev/null | tr -d ' ')" = 89504e47
 fi
+# Review fixes.  Unknown options: one line of ours, no getopt message.
+contact-stats --bogus a.tsv >/dev/null 2>err.txt; st=$?
+check "--bogus: exit 2" test "$st" = 2
+check "--bogus: reported once, as tool: option: why" test "$(grep -c 'bogus' err.txt)/$(head -n 1 err.txt)" = "1/contact-stats: --bogus: unknown option"
+# Columns of the review: the used eps_c, both Yastrebov alphas, a_r_se.
+check "eps_c_used: the finest pair of three (linear, finest)" test "$(col out.tsv eps_c_used 1)" = "0.0625,0.125"
+check_rel "a_r_se = 0.001/sqrt(3)" "$(col out.tsv a_r_se 1)" "$(awk 'BEGIN { printf "%.17g", 0.001 / sqrt(3) }')" 1e-9
+check_rel "a_yastrebov_011 (alpha = 0.11, Eq. 23)" "$(col out.tsv a_yastrebov_011 1)" \
+    "$(awk 'BEGIN { a = 0.10825 + 0.02 * 0.0625; printf "%.17g", a * (1 - 0.3 * 0.11) }')" 1e-12
+contact-stats --alpha 0.2 -o al.tsv a.tsv 2>/dev/null
+check_rel "--alpha changes a_yastrebov" "$(col al.tsv a_yastrebov 1)" \
+    "$(awk 'BEGIN { a = 0.10825 + 0.02 * 0.0625; printf "%.17g", a * (1 - 0.3 * 0.2) }')" 1e-12
+check "--alpha leaves a_yastrebov_011" test "$(col al.tsv a_yastrebov_011 1)" = "$(col out.tsv a_yastrebov_011 1)"
+# Forty grids: every eps_c listed in full (no fixed-size buffer), lsq uses all.
+rows 1 "$(awk 'BEGIN { for (n = 100; n < 140; n++) printf "%s%d", (n > 100 ? "," : ""), n }')" 0.05 >many.tsv
+check_status "forty discretisations, lsq" 0 contact-stats --fit lsq -o many-out.tsv many.tsv
+check_rel "all forty eps_c listed" "$(col many-out.tsv eps_c 1 | tr ',' '\n' | wc -l)" 40 0
+check "eps_c_used = eps_c for lsq" test "$(col many-out.tsv eps_c_used 1)" = "$(col many-out.tsv eps_c 1)"
+check_rel "the exact eps_c of nx = 137 is listed" "$(col many-out.tsv eps_c 1 | tr ',' '\n' | sed -n 3p)" \
+    "$(awk 'BEGIN { printf "%.17g", 16 / 137 }')" 1e-16
+# Two outputs on standard output: refused.
+check_status "--gnuplot - with the table on stdout" 2 contact-stats --gnuplot - a.tsv
+check_status "--gnuplot - with -o" 0 contact-stats --gnuplot - -o /dev/null a.tsv
+check_status "--png - with the table on stdout" 2 contact-stats --png - a.tsv
+# --png: gnuplot run on the script, written atomically.
+mkdir -p png nobin fakebin
+printf '#!/bin/sh\necho "fake gnuplot fails" >&2\nexit 3\n' >fakebin/gnuplot
+chmod +x fakebin/gnuplot
+PATH="$T_TMP/nobin" "$RC_BIN/contact-stats" --png png/k.png -o png/t.tsv a.tsv 2>err.txt; st=$?
+check "--png without gnuplot: exit 1" test "$st" = 1
+check "--png without gnuplot: the message" grep -qx "contact-stats: --png: gnuplot not found; use --gnuplot FILE to get the script" err.txt
+check "--png without gnuplot: the table is written" test "$(col png/t.tsv a_r 1)" = "$(col out.tsv a_r 1)"
+PATH="$T_TMP/fakebin" "$RC_BIN/contact-stats" --png png/k.png -o /dev/null a.tsv 2>err.txt; st=$?
+check "--png with a failing gnuplot: exit 1" test "$st" = 1
+check "--png with a failing gnuplot: said so" grep -q "gnuplot failed (exit status 3)" err.txt
+check "a failed --png leaves nothing beside the target" test "$(ls -A png)" = t.tsv
+if command -v gnuplot >/dev/null 2>&1; then
+	check_status "--png" 0 contact-stats --png png/k.png -o /dev/null a.tsv h3.tsv
+	check "--png writes a PNG" test "$(od -An -tx1 -N8 png/k.png | tr -d ' ')" = 89504e470d0a1a0a
+	check "--png leaves no temporary file" test "$(ls -A png | tr '\n' ' ')" = "k.png t.tsv "
+	contact-stats --png - -o /dev/null a.tsv >png/stdout.png 2>/dev/null
+	check "--png - writes the PNG to standard output" test "$(od -An -tx1 -N4 png/stdout.png | tr -d ' ')" = 89504e47
+else
+	echo "note: gnuplot not installed; --png output not tested"
+fi
 summary
