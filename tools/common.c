@@ -308,6 +308,18 @@ tool_read_grid(const struct tool *t, const char *path)
 }
 
 void
+tool_output(struct tool *t, const char *opt, const char *path, int binary)
+{
+	if (path == NULL || !rc_is_stdio(path))
+		return;
+	if (++t->nstdout == 2)
+		tool_bad(t, "%s -: only one output may go to standard output", opt);
+	else if (binary && isatty(STDOUT_FILENO))
+		tool_bad(t, "%s -: standard output is a terminal; refusing to "
+		    "write binary data there", opt);
+}
+
+void
 tool_check_grid_path(struct tool *t, const char *opt, const char *path)
 {
 	if (path != NULL && rc_format_from_name(path) < 0)

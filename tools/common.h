@@ -38,6 +38,7 @@ struct tool {
 	double lx, ly;		/* -L, cell size for inputs that have none */
 	int have_l;
 	int nbad;		/* usage problems reported so far */
+	int nstdout;		/* outputs bound for standard output */
 	const char *wisdom;	/* --wisdom FILE, else $RC_WISDOM, else NULL */
 	int fft_effort;		/* --fft-effort, -1 for the policy */
 	int fft_measured;	/* a plan was asked for with MEASURE or more */
@@ -100,6 +101,10 @@ rc_grid *tool_read_grid(const struct tool *t, const char *path);
  * follows the extension.  Refuses binary output to a terminal.  Exits 1 on
  * failure. */
 void tool_write_grid(const struct tool *t, rc_grid *g, const char *path);
+/* Declare an output (path NULL: not requested; "-": standard output).  A
+ * second output bound for standard output is a usage problem, and so is
+ * binary data (binary != 0) bound for a terminal. */
+void tool_output(struct tool *t, const char *opt, const char *path, int binary);
 /* Check an output path's extension up front (tool_bad if unknown). */
 void tool_check_grid_path(struct tool *t, const char *opt, const char *path);
 

@@ -232,6 +232,8 @@ main(int argc, char **argv)
 	if (p.type != RC_SURF_SINE && p.type != RC_SURF_EGGBOX && (have_wave || have_amp))
 		tool_bad(&t, "--wavelength, --amplitude: only for --type sine or eggbox");
 	tool_check_grid_path(&t, "-o", t.out);
+	tool_output(&t, "-o", t.out ? t.out : "-", 0);
+	tool_output(&t, "--png", t.png, 1);
 	/* The library's check catches the cross conditions (lambda_s against
 	 * the grid, lambda_r > lambda_s, wavelengths that must divide the
 	 * cell); values reported above are still at their defaults here. */

@@ -400,6 +400,10 @@ main(int argc, char **argv)
 		tool_bad(&t, "--fd: applies to the scalar row and --by-height only");
 	if (psd2d != NULL)
 		tool_check_grid_path(&t, "--psd2d", psd2d);
+	tool_output(&t, "-o", t.out ? t.out : "-", 0);
+	tool_output(&t, "--psd2d", psd2d, 0);
+	tool_output(&t, "--gnuplot", gp, 0);
+	tool_output(&t, "--png", t.png, 1);
 	tool_usage_check(&t);
 
 	tool_fft_setup(&t);

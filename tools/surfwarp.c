@@ -151,6 +151,8 @@ main(int argc, char **argv)
 	if (have_hmin && have_hmax && !(hmin < hmax))
 		tool_bad(&t, "--hmin %g, --hmax %g: need hmin < hmax", hmin, hmax);
 	tool_check_grid_path(&t, "-o", t.out);
+	tool_output(&t, "-o", t.out ? t.out : "-", 0);
+	tool_output(&t, "--png", t.png, 1);
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);
