@@ -16,6 +16,15 @@
 #include "kappa.h"
 #include "spectral.h"
 
+/* Eq. 9's (gbar_c')^2 = -<dh lap h>_c can be negative over a partial
+ * contact (dh about the contact mean): return its signed square root,
+ * sign(x) sqrt(|x|), so the column is never NaN and squares back to x. */
+static double
+signed_root(double x)
+{
+	return x == 0 ? 0 : copysign(sqrt(fabs(x)), x);
+}
+
 void
 rc_contact_defaults(rc_contact_opts *o)
 {
@@ -296,7 +305,7 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 		fd_sums(h, contact, hbar, &sum, &dh_lap);
 		st->gbar_c = sqrt(sum / (double)n_c);
 		sum = -dh_lap / (double)n_c;
-		st->gbar_c_prime = sum >= 0 ? sqrt(fabs(sum)) : NAN;
+		st->gbar_c_prime = signed_root(sum);
 		return 0;
 	}
 	memset(&own, 0, sizeof(own));
@@ -315,7 +324,7 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 	if (rc_spectral_deriv(h, fft, RC_DERIV_LAPLACIAN, err) != 0)
 		goto out;
 	sum = -masked_sum_dh(fft->real, h->z, hbar, contact, nx, ny) / (double)n_c;
-	st->gbar_c_prime = sum >= 0 ? sqrt(fabs(sum)) : NAN;	/* no -0 */
+	st->gbar_c_prime = signed_root(sum);
 	rv = 0;
 out:
 	if (fft == &own)

@@ -15,7 +15,8 @@
  *                   the expected area of the patch that a randomly picked
  *                   contact point belongs to (length^2)
  *   gbar_c          sqrt(<|grad h|^2>_c)                          (Eq. 8)
- *   gbar_c_prime    sqrt(-<dh lap h>_c), dh = h - <h>_c            (Eq. 9)
+ *   gbar_c_prime    sign(x) sqrt(|x|), x = -<dh lap h>_c, dh = h - <h>_c
+ *                   (Eq. 9; x can be negative over a partial contact)
  *   kappa, kappa_c  from a_r = erf(sqrt(pi) kappa p* / 2) with
  *                   p* = p/(E* gbar) and p*_c = p/(E* gbar_c)  (Eqs. 24, 8)
  * Derivatives are taken on the whole periodic indenter, then averaged
@@ -23,8 +24,7 @@
  * heights), one field at a time; or, with opts.fd, central differences
  * h_x = (h[i+1] - h[i-1]) / 2dx and the 5-point Laplacian, which need no
  * buffer and suit indenters with kinks (a kink makes the spectral
- * derivatives ring over the whole cell).  Averages over an empty contact,
- * and gbar_c_prime when -<dh lap h>_c < 0, are NaN.
+ * derivatives ring over the whole cell).  Averages over an empty contact are NaN.
  */
 #ifndef RC_CONTACT_H
 #define RC_CONTACT_H

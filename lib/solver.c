@@ -113,7 +113,7 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->lx = ind->lx;
 	s->ly = ind->ly;
 	if (rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    o->measure ? RC_FFT_MEASURE : RC_FFT_ESTIMATE, err) != 0) {
+	    (enum rc_fft_effort)o->measure, err) != 0) {
 		free(s);
 		return NULL;
 	}

@@ -26,7 +26,8 @@ typedef struct rc_solver_opts {
 	double modulus;		/* contact modulus E* (default 1) */
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
-	int measure;		/* plan FFTs with FFTW_MEASURE */
+	int measure;		/* FFT planning effort, an enum rc_fft_effort
+				 * (0: ESTIMATE, 1: MEASURE, ...) */
 	/* Called every few iterations if not NULL (progress on a terminal). */
 	void (*progress)(void *ctx, long iter, double residual, double contact_fraction);
 	void *progress_ctx;

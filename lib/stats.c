@@ -414,7 +414,8 @@ rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
 	s->hmin = hmin;
 	s->hmax = hmax;
 	s->gbar = sqrt(gg);
-	s->gbar_prime = -dh_lap >= 0 ? sqrt(-dh_lap) : NAN;
+	/* signed root: -<dh lap h>_c may be negative over a partial mask */
+	s->gbar_prime = dh_lap == 0 ? 0 : copysign(sqrt(fabs(dh_lap)), -dh_lap);
 	s->rms_laplacian = sqrt(lap2);
 	s->mxx = mxx;
 	s->myy = myy;

@@ -53,7 +53,7 @@ typedef struct rc_stats {
 	double fraction;	/* n_avg / (nx ny) */
 	double mean, hrms, skewness, kurtosis, hmin, hmax;
 	double gbar;		/* sqrt(tr M) over the set */
-	double gbar_prime;	/* sqrt(-<dh lap h>), Eq. 9; NaN if negative */
+	double gbar_prime;	/* sign(x) sqrt(|x|), x = -<dh lap h>, Eq. 9 */
 	double rms_laplacian;	/* sqrt(<(lap h)^2>) */
 	double mxx, myy, mxy;	/* gradient tensor M */
 	double nayak;

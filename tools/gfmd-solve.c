@@ -181,6 +181,9 @@ usage(void)
 "  -o FILE              result table (default standard output)\n"
 "  --json               JSON instead of TSV\n"
 "  -j N                 threads (default all cores)\n"
+"  --fft-effort E       estimate, measure or patient FFT planning (default:\n"
+"                       measure for 1024^2 points and more, else estimate)\n"
+"  --wisdom FILE        load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 "  -q                   no progress display\n"
 "  -L LX[xLY]           cell size of an input that carries none\n"
 "  -h, --help           this help\n"
@@ -230,6 +233,7 @@ main(int argc, char **argv)
 		{ "gap", required_argument, NULL, OPT_GAP },
 		{ "pressure", required_argument, NULL, OPT_PRESSURE_FIELD },
 		{ "displacement", required_argument, NULL, OPT_DISPLACEMENT },
+		TOOL_FFT_LONGOPTS,
 		{ "fd", no_argument, NULL, OPT_FD },
 		{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
 		{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY },
@@ -400,7 +404,7 @@ main(int argc, char **argv)
 	input = optind < argc ? argv[optind] : NULL;
 	npressures = nreduced ? nreduced : nabsolute;
 
-	rc_fft_set_threads(t.threads);
+	tool_fft_setup(&t);
 	h = tool_read_grid(&t, input);
 	if (resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
@@ -475,8 +479,11 @@ main(int argc, char **argv)
 		so.progress = show_progress;
 		so.progress_ctx = &pr;
 	}
+	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
+	so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
 	if ((solver = rc_solver_new(h, &so, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
+	tool_fft_finish(&t);
 	if (init != NULL) {
 		rc_grid *u = tool_read_grid(&t, init);
 		if (u->nx != h->nx || u->ny != h->ny)

@@ -34,4 +34,10 @@ for spec in "0.01 0.01" "0.01 1"; do
 	ratio=$(awk -v a="$n0" -v b="$nk" 'BEGIN { if (a <= 0 || b <= 0) { print 0; exit } r = a / b; if (r < 1) r = 1 / r; print r }')
 	check_range "carve $spec: nayak $n0 -> $nk changes by at least 5x" "$ratio" 5 1e9
 done
+# gbar_c and gbar_c_prime: gfmd-solve (lib/contact.c) and surfstat --mask
+# (lib/stats.c) are two implementations; they agree to round-off.
+surfstat --mask c.surf -o masked.tsv a.surf
+check_rel "gbar_c: gfmd-solve = surfstat --mask" "$(col orig.tsv gbar_c)" "$(col masked.tsv gbar_c)" 1e-12
+check_rel "gbar_c_prime: gfmd-solve = surfstat --mask" "$(col orig.tsv gbar_c_prime)" "$(col masked.tsv gbar_c_prime)" 1e-12
+check "gbar_c_prime is a number" awk -v v="$(col orig.tsv gbar_c_prime)" 'BEGIN { exit !(v == v + 0) }'
 summary

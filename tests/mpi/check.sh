@@ -64,8 +64,8 @@ for spec in "64x48 -H 0.7 --seed 5" "97x64 -H 0.3 --seed 11 --rolloff --lambda-r
 		# The header but for the history (the command lines differ) and
 		# the scaled amplitude of a sine (normalisation round-off), which also
 		# change the padding of the end_header line.
-		head -c 4096 ser.surf | sed '/^end_header/q; s/ *$//' >hs.txt
-		head -c 4096 mpi.surf | sed '/^end_header/q; s/ *$//' >hm.txt
+		head -c 4096 ser.surf | sed 's/ *$//; /^end_header/q' >hs.txt
+		head -c 4096 mpi.surf | sed 's/ *$//; /^end_header/q' >hm.txt
 		check "surfgen $spec np=$np same header" sh -c "grep -av \
 		    '^history\|^data_offset\|^meta.amplitude' hs.txt >hs2.txt; grep -av \
 		    '^history\|^data_offset\|^meta.amplitude' hm.txt | cmp -s - hs2.txt"
