@@ -197,10 +197,15 @@ rc_mpi_surf_read(const char *path, size_t *ny, double **local, rc_err *err)
 		    (unsigned long long)(offset + head->nx * *ny * 8), (long long)size);
 		goto fail;
 	}
-	/* One collective read per rank; counts above 2^31 values would need
-	 * a derived type, which rows of at most 2^31 / nx avoid. */
+	/* One collective read per rank, counted in rows (an MPI count is an
+	 * int; a row type keeps it far from 2^31). */
+	MPI_Datatype row;
+
+	MPI_Type_contiguous((int)head->nx, MPI_DOUBLE, &row);
+	MPI_Type_commit(&row);
 	rc = MPI_File_read_at_all(fh, (MPI_Offset)(offset + j0 * head->nx * 8), *local,
-	    (int)(rows * head->nx), MPI_DOUBLE, &status);
+	    (int)rows, row, &status);
+	MPI_Type_free(&row);
 	MPI_File_close(&fh);
 	if (agree_any(rc == MPI_SUCCESS ? 0 : rc_seterr(err, "%s: MPI-IO read failed",
 	    path), err) != 0)
@@ -253,11 +258,16 @@ rc_mpi_surf_write(const rc_grid *head, size_t ny, const double *local,
 	if (rc_mpi_rank() == 0)
 		rc = MPI_File_write_at(fh, 0, text, (int)len, MPI_CHAR, &status);
 	rc_mpi_rows(head->nx, ny, &rows, &j0, &alloc);
+	MPI_Datatype row;
+
+	MPI_Type_contiguous((int)head->nx, MPI_DOUBLE, &row);
+	MPI_Type_commit(&row);
 	if (rc == MPI_SUCCESS)
 		rc = MPI_File_write_at_all(fh, (MPI_Offset)(offset + j0 * head->nx * 8),
-		    local, (int)(rows * head->nx), MPI_DOUBLE, &status);
+		    local, (int)rows, row, &status);
 	else
-		MPI_File_write_at_all(fh, 0, local, 0, MPI_DOUBLE, &status);
+		MPI_File_write_at_all(fh, 0, local, 0, row, &status);
+	MPI_Type_free(&row);
 	rc = MPI_File_close(&fh) == MPI_SUCCESS ? rc : !MPI_SUCCESS;
 	st = agree_any(rc == MPI_SUCCESS ? 0 : rc_seterr(err, "%s: MPI-IO write "
 	    "failed", part), err);

@@ -94,21 +94,30 @@ owner(const unsigned long long *first, int nranks, size_t j)
 }
 
 /* n_cl (contact.c's definition: a contact point with a non-contact
- * neighbour of the four) with a one-row halo from the neighbouring ranks. */
-static size_t
-contact_line(const rc_solver *s, size_t ny_all, size_t j0)
+ * neighbour of the four) with a one-row halo from the neighbouring ranks;
+ * this rank's count into *n_cl.  Collective. */
+static int
+contact_line(const rc_solver *s, size_t ny_all, size_t j0, size_t *count,
+    rc_err *err)
 {
 	size_t nx = s->nx, rows = s->ny, n_cl = 0, i, j;
 	unsigned long long mine[2] = { j0, rows }, *all;
 	unsigned char *below, *above;
 	int nranks = rc_mpi_size(), nreq = 0;
+	double bad;
 	MPI_Request req[4];
 
 	all = malloc(2 * (size_t)nranks * sizeof(*all));
 	below = malloc(nx);
 	above = malloc(nx);
-	if (all == NULL || below == NULL || above == NULL)
-		abort();	/* a few rows of bytes */
+	bad = all == NULL || below == NULL || above == NULL;
+	rc_mpi_max(&bad, 1);
+	if (bad) {
+		free(all);
+		free(below);
+		free(above);
+		return rc_seterr(err, "out of memory for the contact line halo");
+	}
 	MPI_Allgather(mine, 2, MPI_UNSIGNED_LONG_LONG, all, 2,
 	    MPI_UNSIGNED_LONG_LONG, MPI_COMM_WORLD);
 	if (rows > 0) {
@@ -142,7 +151,8 @@ contact_line(const rc_solver *s, size_t ny_all, size_t j0)
 	free(all);
 	free(below);
 	free(above);
-	return n_cl;
+	*count = n_cl;
+	return 0;
 }
 
 double
@@ -258,7 +268,7 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
     double *gbar, rc_contact_stats *st, rc_err *err)
 {
 	rc_elastic *e = &s->el;
-	size_t rows, j0, alloc, n = s->n, k, nc = e->nxc * e->ny;
+	size_t rows, j0, alloc, n = s->n, k, nc = e->nxc * e->ny, line = 0;
 	double sums[3] = { 0, 0, 0 }, hbar, modulus = s->opts.modulus;
 	fftw_complex *spec0;
 	double *f;
@@ -275,7 +285,9 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
 			sums[0] += 1;
 			sums[1] += s->height[k];
 		}
-	sums[2] = (double)contact_line(s, e->fft.ny, j0);
+	if (contact_line(s, e->fft.ny, j0, &line, err) != 0)
+		return -1;
+	sums[2] = (double)line;
 	rc_mpi_sum(sums, 3);
 	st->n_c = (size_t)sums[0];
 	st->n_cl = (size_t)sums[2];
