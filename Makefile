@@ -31,9 +31,11 @@ endif
 LIB_SRC  = $(wildcard lib/*.c)
 LIB_OBJ  = $(LIB_SRC:%.c=$(O)/%.o)
 LIB      = $(O)/librc.a
-TOOL_SRC = $(filter-out tools/common.c,$(wildcard tools/*.c))
+TOOL_SHARED = tools/common.c tools/surfgen_opts.c tools/gfmd_opts.c \
+	tools/gfmd_row.c
+TOOL_SRC = $(filter-out $(TOOL_SHARED),$(wildcard tools/*.c))
 TOOLS    = $(TOOL_SRC:tools/%.c=$(BIN)/%)
-COMMON_OBJ = $(O)/tools/common.o
+COMMON_OBJ = $(TOOL_SHARED:%.c=$(O)/%.o)
 TEST_SRC = $(wildcard tests/test_*.c)
 TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
 TESTLIB_OBJ = $(O)/tests/testlib.o

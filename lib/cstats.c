@@ -23,7 +23,7 @@ static const char *const output_cols[] = {
 	"p_star", "p", "a_r", "n_c", "n_cl", "n_tot", "a_yastrebov", "gbar",
 	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
-	"residual", "seconds", "nx", "ny", NULL
+	"residual", "seconds", "plan_seconds", "nx", "ny", NULL
 };
 
 /* Metadata derived from the sampled heights, which differ slightly between

@@ -86,8 +86,12 @@ grid = $(shell awk 'BEGIN { $(call evenup,1 / ($(2) * $(1))); print n }')
 # $(call schedule,EPS_REF,P_REF,P): Eq. 27, eps = eps_ref (p/p_ref)^(1/4)
 schedule = $(shell awk 'BEGIN { printf "%.6g", $(1) * ($(3) / $(2)) ^ 0.25 }')
 
-# $(call tsvcat,FILES): rows of many one-header TSVs under one header
-tsvcat = awk 'FNR == 1 && NR != 1 { next } { print }' $(1)
+# $(call tsvcat,FILES): rows of many one-header TSVs under one header; files
+# whose headers differ (made by different versions of a tool) are an error,
+# not a silent shift of columns: make clean and run again.
+tsvcat = awk 'FNR == 1 { if (NR == 1) h = $$0; else if ($$0 != h) { \
+	print FILENAME ": header differs from the first file'"'"'s; make clean" > "/dev/stderr"; exit 1 } \
+	else next } { print }' $(1)
 
 .PHONY: clean
 clean:

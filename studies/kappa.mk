@@ -23,11 +23,11 @@ ET_REF    ?= 0.5
 ifeq ($(FULL),1)
 PRESSURES ?= 0.2 0.1 0.05 0.025 0.0125
 SEEDS     ?= 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20
-EPS_C     ?= 0.25 0.125
+EPS_C     ?= 0.25 0.125 0.0625
 else
 PRESSURES ?= 0.2 0.1 0.05 0.025
-SEEDS     ?= 1 2 3 4
-EPS_C     ?= 0.5 0.25
+SEEDS     ?= 1 2 3 4 5 6 7 8
+EPS_C     ?= 0.25 0.125 0.0625
 endif
 
 k_ef = $(if $(filter f ft,$(1)),$(call schedule,$(EF_REF),$(P_REF),$(2)),$(EF_REF))

@@ -110,5 +110,7 @@ void tool_check_grid_path(struct tool *t, const char *opt, const char *path);
 
 /* Flush stdout and turn a write error into exit status 1. */
 int tool_exit(const struct tool *t, int status);
+/* Monotonic wall clock in seconds, for the tools' timing columns. */
+double tool_clock(void);
 
 #endif

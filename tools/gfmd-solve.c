@@ -13,6 +13,8 @@
 #include "atomic.h"
 #include "checkpoint.h"
 #include "common.h"
+#include "gfmd_opts.h"
+#include "gfmd_row.h"
 #include "contact.h"
 #include "fft.h"
 #include "png.h"
@@ -20,22 +22,6 @@
 #include "spectral.h"
 #include "table.h"
 
-enum {
-	OPT_PRESSURE_ABS = OPT_TOOL_FIRST,
-	OPT_METHOD,
-	OPT_TOL,
-	OPT_MAX_ITER,
-	OPT_ALPHA,
-	OPT_INIT,
-	OPT_CONTACT,
-	OPT_GAP,
-	OPT_PRESSURE_FIELD,
-	OPT_DISPLACEMENT,
-	OPT_FD,
-	OPT_CHECKPOINT,
-	OPT_CHECKPOINT_EVERY,
-	OPT_RESUME
-};
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;
@@ -190,16 +176,6 @@ usage(void)
 "  --version            the version\n");
 }
 
-static void
-check_positive_list(struct tool *t, const char *opt, const double *v, size_t n)
-{
-	for (size_t i = 0; i < n; i++)
-		if (!(v[i] > 0)) {
-			tool_bad(t, "%s: pressure %g must be positive", opt, v[i]);
-			return;
-		}
-}
-
 /* Make a field grid shaped and labelled like the indenter. */
 static rc_grid *
 field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
@@ -223,30 +199,12 @@ int
 main(int argc, char **argv)
 {
 	static const struct option longopts[] = {
-		{ "pressure-abs", required_argument, NULL, OPT_PRESSURE_ABS },
-		{ "method", required_argument, NULL, OPT_METHOD },
-		{ "tol", required_argument, NULL, OPT_TOL },
-		{ "max-iter", required_argument, NULL, OPT_MAX_ITER },
-		{ "alpha", required_argument, NULL, OPT_ALPHA },
-		{ "init", required_argument, NULL, OPT_INIT },
-		{ "contact", required_argument, NULL, OPT_CONTACT },
-		{ "gap", required_argument, NULL, OPT_GAP },
-		{ "pressure", required_argument, NULL, OPT_PRESSURE_FIELD },
-		{ "displacement", required_argument, NULL, OPT_DISPLACEMENT },
+		GFMD_LONGOPTS,
 		TOOL_FFT_LONGOPTS,
-		{ "fd", no_argument, NULL, OPT_FD },
-		{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT },
-		{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY },
-		{ "resume", required_argument, NULL, OPT_RESUME },
-		{ "json", no_argument, NULL, OPT_JSON },
-		{ "png", required_argument, NULL, OPT_PNG },
-		{ "version", no_argument, NULL, OPT_VERSION },
-		{ "help", no_argument, NULL, 'h' },
 		{ NULL, 0, NULL, 0 }
 	};
-	static const char optstring[] = "p:E:o:j:qL:h";
 	struct tool t;
-	rc_solver_opts so;
+	struct gfmd_opts o;
 	rc_contact_opts co;
 	rc_solver *solver;
 	rc_grid *h;
@@ -257,245 +215,124 @@ main(int argc, char **argv)
 	rc_row row;
 	struct progress pr;
 	struct sigaction sa;
-	double *reduced = NULL, *absolute = NULL, gbar, modulus = 1, alpha;
-	double last_p = 0, last_p_star = 0;
-	size_t npressures = 0, nreduced = 0, nabsolute = 0, nunconverged = 0;
-	const char *init = NULL, *contact_path = NULL, *gap_path = NULL;
-	const char *pressure_path = NULL, *displacement_path = NULL, *input;
-	const char *ck_path = NULL, *resume_path = NULL;
-	double ck_every = 0;
+	double gbar, last_p = 0, last_p_star = 0, plan_seconds;
+	size_t npressures = 0, nunconverged = 0;
+	const char *input;
 	rc_checkpoint ck, saved;
 	rc_grid *saved_u = NULL;
 	size_t first = 0;
-	long n, resumed_iterations = 0;
-	int c, method, fd = 0, status = 0;
-	int given_method = 0, given_tol = 0, given_e = 0, given_alpha = 0;
-	int given_fd = 0, given_max_iter = 0;
+	long resumed_iterations = 0;
+	int c, method, status = 0;
 
 	tool_init(&t, "gfmd-solve", argc, argv);
-	rc_solver_defaults(&so);
-	alpha = RC_YASTREBOV_ALPHA;
+	gfmd_opts_init(&o);
 	opterr = 0;	/* tool_bad reports, so that all problems are counted */
-	while ((c = getopt_long(argc, argv, optstring, longopts, NULL)) != -1) {
-		switch (c) {
-		case 'p':
-			free(reduced);
-			if (tool_double_list(&t, "-p", optarg, &reduced, &nreduced) == 0)
-				check_positive_list(&t, "-p", reduced, nreduced);
-			break;
-		case OPT_PRESSURE_ABS:
-			free(absolute);
-			if (tool_double_list(&t, "--pressure-abs", optarg, &absolute,
-			    &nabsolute) == 0)
-				check_positive_list(&t, "--pressure-abs", absolute, nabsolute);
-			break;
-		case 'E':
-			if (tool_double(&t, "-E", optarg, &modulus) == 0 && !(modulus > 0))
-				tool_bad(&t, "-E %s: the contact modulus must be positive", optarg);
-			given_e = 1;
-			break;
-		case OPT_METHOD:
-			if ((method = rc_method_parse(optarg)) < 0)
-				tool_bad(&t, "--method %s: want fire or cg", optarg);
-			else
-				so.method = (enum rc_method)method;
-			given_method = 1;
-			break;
-		case OPT_TOL:
-			if (tool_double(&t, "--tol", optarg, &so.tol) == 0 &&
-			    !(so.tol > 0 && so.tol < 1))
-				tool_bad(&t, "--tol %s: want a tolerance in (0, 1)", optarg);
-			given_tol = 1;
-			break;
-		case OPT_MAX_ITER:
-			if (tool_long(&t, "--max-iter", optarg, &n) == 0) {
-				if (n < 1)
-					tool_bad(&t, "--max-iter %s: want at least 1", optarg);
-				else
-					so.max_iter = n;
-			}
-			given_max_iter = 1;
-			break;
-		case OPT_ALPHA:
-			if (tool_double(&t, "--alpha", optarg, &alpha) == 0 &&
-			    !(alpha >= 0 && alpha <= 1))
-				tool_bad(&t, "--alpha %s: want a weight in [0, 1]", optarg);
-			given_alpha = 1;
-			break;
-		case OPT_INIT:
-			init = optarg;
-			break;
-		case OPT_CONTACT:
-			contact_path = optarg;
-			break;
-		case OPT_GAP:
-			gap_path = optarg;
-			break;
-		case OPT_PRESSURE_FIELD:
-			pressure_path = optarg;
-			break;
-		case OPT_DISPLACEMENT:
-			displacement_path = optarg;
-			break;
-		case OPT_FD:
-			fd = 1;
-			given_fd = 1;
-			break;
-		case OPT_CHECKPOINT:
-			ck_path = optarg;
-			break;
-		case OPT_CHECKPOINT_EVERY:
-			if (tool_double(&t, "--checkpoint-every", optarg, &ck_every) == 0 &&
-			    !(ck_every > 0 && ck_every <= 1e6))
-				tool_bad(&t, "--checkpoint-every %s: want minutes in (0, 1e6]",
-				    optarg);
-			break;
-		case OPT_RESUME:
-			resume_path = optarg;
-			break;
-		case 'h':
+	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
+		if (c == 'h') {
 			usage();
 			return tool_exit(&t, 0);
-		case '?':
-			/* optopt: the option whose argument is missing (a long
-			 * option's code, or a letter), 0 for an unknown long one. */
-			if (optopt > 0 && optopt < 128 && strchr(optstring, optopt))
-				tool_bad(&t, "-%c: missing argument", optopt);
-			else if (optopt > 0 && optopt < 128)
-				tool_bad(&t, "-%c: unknown option", optopt);
-			else if (optopt != 0)
-				tool_bad(&t, "%s: missing argument", argv[optind - 1]);
-			else
-				tool_bad(&t, "%s: unknown option", argv[optind - 1]);
-			break;
-		default:
-			tool_common_option(&t, c, optarg);
 		}
+		gfmd_option(&t, &o, c, optarg, argv);
 	}
-	if (nreduced && nabsolute)
-		tool_bad(&t, "-p and --pressure-abs: give one of them, not both");
-	else if (!nreduced && !nabsolute && t.nbad == 0 && resume_path == NULL)
-		tool_bad(&t, "no pressure: give -p P[,P...] or --pressure-abs P[,P...]");
-	if (ck_every > 0 && ck_path == NULL)
-		tool_bad(&t, "--checkpoint-every: needs --checkpoint FILE");
-	if (ck_path != NULL && rc_is_stdio(ck_path))
-		tool_bad(&t, "--checkpoint -: give a file name");
-	if (resume_path != NULL && init != NULL)
-		tool_bad(&t, "--resume and --init: the checkpoint is the start; "
-		    "give one of them");
-	if (argc - optind > 1)
-		tool_bad(&t, "%s: one input file at most", argv[optind + 1]);
-	{
-		const char *fields[] = { contact_path, gap_path, pressure_path,
-		    displacement_path };
-		const char *names[] = { "--contact", "--gap", "--pressure",
-		    "--displacement" };
-		for (int k = 0; k < 4; k++) {
-			if (fields[k] != NULL && rc_is_stdio(fields[k]))
-				tool_bad(&t, "%s %s: fields go to files; standard output "
-				    "carries the result table", names[k], fields[k]);
-			else
-				tool_check_grid_path(&t, names[k], fields[k]);
-		}
-		if (t.png != NULL && rc_is_stdio(t.png))
-			tool_bad(&t, "--png -: give a file name");
-	}
+	gfmd_opts_check(&t, &o, argc, argv);
 	tool_usage_check(&t);
 	input = optind < argc ? argv[optind] : NULL;
-	npressures = nreduced ? nreduced : nabsolute;
+	npressures = o.nreduced ? o.nreduced : o.nabsolute;
 
 	tool_fft_setup(&t);
 	h = tool_read_grid(&t, input);
-	if (resume_path != NULL) {
+	if (o.resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */
-		if (rc_checkpoint_read(&saved, &saved_u, resume_path, &err) != 0)
-			tool_fail(&t, "%s: %s", resume_path, err.msg);
-		if (!given_method && (method = rc_method_parse(saved.method)) >= 0)
-			so.method = (enum rc_method)method;
-		if (!given_tol)
-			so.tol = saved.tol;
-		if (!given_e)
-			modulus = saved.modulus;
-		if (!given_alpha)
-			alpha = saved.alpha;
-		if (!given_fd)
-			fd = saved.fd;
-		if (!given_max_iter)
-			so.max_iter = saved.max_iter;
-		if (!nreduced && !nabsolute) {
+		if (rc_checkpoint_read(&saved, &saved_u, o.resume_path, &err) != 0)
+			tool_fail(&t, "%s: %s", o.resume_path, err.msg);
+		if (!o.given_method && (method = rc_method_parse(saved.method)) >= 0)
+			o.so.method = (enum rc_method)method;
+		if (!o.given_tol)
+			o.so.tol = saved.tol;
+		if (!o.given_e)
+			o.modulus = saved.modulus;
+		if (!o.given_alpha)
+			o.alpha = saved.alpha;
+		if (!o.given_fd)
+			o.fd = saved.fd;
+		if (!o.given_max_iter)
+			o.so.max_iter = saved.max_iter;
+		if (!o.nreduced && !o.nabsolute) {
 			double *copy = malloc(saved.npressures * sizeof(double));
 
 			if (copy == NULL)
 				tool_fail(&t, "out of memory");
 			memcpy(copy, saved.pressures, saved.npressures * sizeof(double));
 			if (saved.reduced) {
-				reduced = copy;
-				nreduced = saved.npressures;
+				o.reduced = copy;
+				o.nreduced = saved.npressures;
 			} else {
-				absolute = copy;
-				nabsolute = saved.npressures;
+				o.absolute = copy;
+				o.nabsolute = saved.npressures;
 			}
 			npressures = saved.npressures;
 		}
 	}
-	if (ck_path != NULL || resume_path != NULL) {
-		if (rc_checkpoint_init(&ck, h, nreduced ? reduced : absolute,
+	if (o.ck_path != NULL || o.resume_path != NULL) {
+		if (rc_checkpoint_init(&ck, h, o.nreduced ? o.reduced : o.absolute,
 		    npressures, &err) != 0)
 			tool_fail(&t, "%s", err.msg);
-		snprintf(ck.method, sizeof(ck.method), "%s", rc_method_name(so.method));
-		ck.tol = so.tol;
-		ck.modulus = modulus;
-		ck.alpha = alpha;
-		ck.fd = fd;
-		ck.max_iter = so.max_iter;
-		ck.reduced = nreduced != 0;
+		snprintf(ck.method, sizeof(ck.method), "%s", rc_method_name(o.so.method));
+		ck.tol = o.so.tol;
+		ck.modulus = o.modulus;
+		ck.alpha = o.alpha;
+		ck.fd = o.fd;
+		ck.max_iter = o.so.max_iter;
+		ck.reduced = o.nreduced != 0;
 	}
-	if (resume_path != NULL) {
+	if (o.resume_path != NULL) {
 		if (rc_checkpoint_match(&saved, &ck, &err) != 0)
-			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
 		if (saved_u->nx != h->nx || saved_u->ny != h->ny)
 			tool_fail(&t, "--resume %s: %zux%zu field, the indenter is "
-			    "%zux%zu", resume_path, saved_u->nx, saved_u->ny, h->nx,
+			    "%zux%zu", o.resume_path, saved_u->nx, saved_u->ny, h->nx,
 			    h->ny);
 	}
 	/* The analysis plan lives as long as the solver; --fd needs none. */
 	memset(&fft, 0, sizeof(fft));
-	if (fd)
+	if (o.fd)
 		gbar = rc_contact_gbar_fd(h);
 	else if (rc_fft_init(&fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &fft, &gbar, &err) != 0)
 		tool_fail(&t, "%s", err.msg);
-	if (nreduced && !(gbar > 0))
+	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
 		    input ? input : "standard input");
 
-	so.modulus = modulus;
-	so.stop = (volatile int *)&stop_flag;
+	o.so.modulus = o.modulus;
+	o.so.stop = (volatile int *)&stop_flag;
 	pr.name = t.name;
 	pr.shown = 0;
 	if (!t.quiet && isatty(STDERR_FILENO)) {
-		so.progress = show_progress;
-		so.progress_ctx = &pr;
+		o.so.progress = show_progress;
+		o.so.progress_ctx = &pr;
 	}
 	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
-	so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
-	if ((solver = rc_solver_new(h, &so, &err)) == NULL)
+	o.so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
+	plan_seconds = tool_clock();
+	if ((solver = rc_solver_new(h, &o.so, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
 	tool_fft_finish(&t);
-	if (init != NULL) {
-		rc_grid *u = tool_read_grid(&t, init);
+	plan_seconds = tool_clock() - plan_seconds;
+	if (o.init != NULL) {
+		rc_grid *u = tool_read_grid(&t, o.init);
 		if (u->nx != h->nx || u->ny != h->ny)
-			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", init,
+			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    u->nx, u->ny, h->nx, h->ny);
 		if (rc_solver_set_displacement(solver, u->z, &err) != 0)
-			tool_fail(&t, "%s: %s", init, err.msg);
+			tool_fail(&t, "%s: %s", o.init, err.msg);
 		rc_grid_free(u);
 	}
-	if (resume_path != NULL) {
+	if (o.resume_path != NULL) {
 		if (rc_solver_set_displacement(solver, saved_u->z, &err) != 0)
-			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
 		rc_grid_free(saved_u);
 		first = saved.next;
 		if (saved.solving)
@@ -514,29 +351,29 @@ main(int argc, char **argv)
 	rc_table_begin(&table, out.fp, t.json);
 	rc_row_init(&row);
 	rc_contact_defaults(&co);
-	co.alpha = alpha;
-	co.modulus = modulus;
+	co.alpha = o.alpha;
+	co.modulus = o.modulus;
 	co.gbar = gbar;
-	co.fft = fd ? NULL : &fft;
-	co.fd = fd;
+	co.fft = o.fd ? NULL : &fft;
+	co.fd = o.fd;
 	/* A resumed run first repeats the rows its checkpoint finished. */
 	for (size_t k = 0; k < first; k++) {
 		if (rc_checkpoint_row(&saved, k, &row, &err) != 0 ||
-		    (ck_path != NULL && rc_checkpoint_add_row(&ck, &row, &err) != 0)) {
+		    (o.ck_path != NULL && rc_checkpoint_add_row(&ck, &row, &err) != 0)) {
 			rc_atomic_abort(&out);
-			tool_fail(&t, "--resume %s: %s", resume_path, err.msg);
+			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
 			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
 		}
 	}
-	if (resume_path != NULL && first >= npressures) {
+	if (o.resume_path != NULL && first >= npressures) {
 		rc_atomic_abort(&out);
 		tool_fail(&t, "--resume %s: every pressure of it is done; nothing "
-		    "to resume", resume_path);
+		    "to resume", o.resume_path);
 	}
-	if (ck_every > 0) {
+	if (o.ck_every > 0) {
 		struct sigaction alarm_sa;
 
 		memset(&alarm_sa, 0, sizeof(alarm_sa));
@@ -544,22 +381,22 @@ main(int argc, char **argv)
 		alarm_sa.sa_flags = SA_RESTART;
 		sigemptyset(&alarm_sa.sa_mask);
 		sigaction(SIGALRM, &alarm_sa, NULL);
-		arm_timer(ck_every);
+		arm_timer(o.ck_every);
 	}
 	for (size_t k = first; k < npressures; k++) {
 		rc_solve_result res;
 		rc_contact_stats st;
-		double p = nreduced ? reduced[k] * modulus * gbar : absolute[k];
+		double p = o.nreduced ? o.reduced[k] * o.modulus * gbar : o.absolute[k];
 		/* Echo a requested p* exactly: p/(E* gbar) rounds. */
-		double p_star = nreduced ? reduced[k] :
-		    gbar > 0 ? p / (modulus * gbar) : NAN;
+		double p_star = o.nreduced ? o.reduced[k] :
+		    gbar > 0 ? p / (o.modulus * gbar) : NAN;
 		double seconds = 0;
 		long iterations = k == first ? resumed_iterations : 0;
 		int r;
 
 		pr.p = p;
 		pr.p_star = p_star;
-		/* A periodic checkpoint stops the solve through so.stop; it is
+		/* A periodic checkpoint stops the solve through o.so.stop; it is
 		 * saved and the same pressure goes on from where it stopped. */
 		for (;;) {
 			r = rc_solver_solve(solver, p, &res, &err);
@@ -575,30 +412,30 @@ main(int argc, char **argv)
 			seconds += res.seconds;
 			if (r == 0 || !stop_flag)
 				break;
-			if (ck_path != NULL) {
+			if (o.ck_path != NULL) {
 				ck.next = k;
 				ck.solving = 1;
 				ck.iterations = iterations;
 				if (rc_checkpoint_write(&ck, rc_solver_displacement(solver),
-				    ck_path, &err) != 0) {
+				    o.ck_path, &err) != 0) {
 					if (stop_signal) {
 						rc_atomic_abort(&out);
 						tool_fail(&t, "interrupted by signal %d; the "
 						    "checkpoint %s could not be written: %s",
-						    (int)stop_signal, ck_path, err.msg);
+						    (int)stop_signal, o.ck_path, err.msg);
 					}
-					tool_warn(&t, "checkpoint %s: %s; going on", ck_path,
+					tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
 					    err.msg);
 				}
 			}
 			if (stop_signal) {
-				char *cmd = ck_path ? resume_command(argc, argv, ck_path) : NULL;
+				char *cmd = o.ck_path ? resume_command(argc, argv, o.ck_path) : NULL;
 
 				/* The rows of finished pressures are complete: keep them. */
 				if (k == 0 || rc_table_end(&table, &err) != 0 ||
 				    rc_atomic_commit(&out, &err) != 0)
 					rc_atomic_abort(&out);
-				if (ck_path == NULL)
+				if (o.ck_path == NULL)
 					tool_fail(&t, "interrupted by signal %d while solving "
 					    "p = %g (iteration %ld); the rows of the %zu of %zu "
 					    "pressures done before it are written, no fields "
@@ -607,7 +444,7 @@ main(int argc, char **argv)
 				tool_fail(&t, "interrupted by signal %d while solving p = %g "
 				    "(pressure %zu of %zu, iteration %ld); state saved in %s; "
 				    "resume with: %s%s", (int)stop_signal, p, k + 1,
-				    npressures, iterations, ck_path, cmd ? cmd : "",
+				    npressures, iterations, o.ck_path, cmd ? cmd : "",
 				    input == NULL || rc_is_stdio(input) ?
 				    " (with the same indenter on standard input)" : "");
 			}
@@ -615,7 +452,7 @@ main(int argc, char **argv)
 			stop_flag = 0;
 			if (stop_signal)
 				stop_flag = 1;
-			arm_timer(ck_every);
+			arm_timer(o.ck_every);
 		}
 		res.iterations = iterations;
 		res.seconds = seconds;
@@ -625,35 +462,19 @@ main(int argc, char **argv)
 			rc_atomic_abort(&out);
 			tool_fail(&t, "p = %g: %s", p, err.msg);
 		}
-		rc_row_clear(&row);
-		if (rc_row_num(&row, "p_star", p_star) ||
-		    rc_row_num(&row, "p", p) ||
-		    rc_row_num(&row, "a_r", st.a_r) ||
-		    rc_row_int(&row, "n_c", (long long)st.n_c) ||
-		    rc_row_int(&row, "n_cl", (long long)st.n_cl) ||
-		    rc_row_int(&row, "n_tot", (long long)st.n_tot) ||
-		    rc_row_num(&row, "a_yastrebov", st.a_yastrebov) ||
-		    rc_row_num(&row, "gbar", gbar) ||
-		    rc_row_num(&row, "gbar_c", st.gbar_c) ||
-		    rc_row_num(&row, "gbar_c_prime", st.gbar_c_prime) ||
-		    rc_row_num(&row, "kappa", st.kappa) ||
-		    rc_row_num(&row, "kappa_c", st.kappa_c) ||
-		    rc_row_num(&row, "mean_gap", rc_solver_mean_gap(solver)) ||
-		    rc_row_num(&row, "elastic_energy",
-		    rc_solver_elastic_energy(solver)) ||
-		    rc_row_int(&row, "n_patches", (long long)st.n_patches) ||
-		    rc_row_num(&row, "patch_size_char", st.patch_size_char) ||
-		    rc_row_int(&row, "iterations", res.iterations) ||
-		    rc_row_num(&row, "residual", res.residual) ||
-		    rc_row_num(&row, "seconds", res.seconds) ||
-		    rc_row_str(&row, "method", rc_method_name(so.method)) ||
-		    rc_row_int(&row, "nx", (long long)h->nx) ||
-		    rc_row_int(&row, "ny", (long long)h->ny) ||
-		    rc_row_num(&row, "lx", h->lx) ||
-		    rc_row_num(&row, "ly", h->ly) ||
-		    rc_row_meta(&row, h)) {
-			rc_atomic_abort(&out);
-			tool_fail(&t, "out of memory");
+		{
+			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
+			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
+			    .elastic_energy = rc_solver_elastic_energy(solver),
+			    .iterations = res.iterations, .residual = res.residual,
+			    .seconds = res.seconds, .plan_seconds = plan_seconds,
+			    .method = rc_method_name(o.so.method), .indenter = h,
+			    .nx = h->nx, .ny = h->ny };
+
+			if (gfmd_result_row(&row, &in) != 0) {
+				rc_atomic_abort(&out);
+				tool_fail(&t, "out of memory");
+			}
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
@@ -668,11 +489,11 @@ main(int argc, char **argv)
 			nunconverged++;
 			tool_warn(&t, "p = %g: not converged after %ld iterations "
 			    "(residual %.3g, tolerance %.3g); row written, going on",
-			    p, res.iterations, res.residual, so.tol);
+			    p, res.iterations, res.residual, o.so.tol);
 		}
 		last_p = p;
 		last_p_star = p_star;
-		if (ck_path != NULL && k + 1 < npressures) {
+		if (o.ck_path != NULL && k + 1 < npressures) {
 			/* Saved after each finished pressure: a stop from here
 			 * on loses nothing. */
 			ck.next = k + 1;
@@ -680,34 +501,34 @@ main(int argc, char **argv)
 			ck.iterations = 0;
 			if (rc_checkpoint_add_row(&ck, &row, &err) != 0 ||
 			    rc_checkpoint_write(&ck, rc_solver_displacement(solver),
-			    ck_path, &err) != 0) {
+			    o.ck_path, &err) != 0) {
 				if (stop_signal) {
 					if (rc_table_end(&table, &err) != 0 ||
 					    rc_atomic_commit(&out, &err) != 0)
 						rc_atomic_abort(&out);
 					tool_fail(&t, "interrupted by signal %d after pressure "
 					    "%zu of %zu; the checkpoint %s could not be written: "
-					    "%s", (int)stop_signal, k + 1, npressures, ck_path,
+					    "%s", (int)stop_signal, k + 1, npressures, o.ck_path,
 					    err.msg);
 				}
-				tool_warn(&t, "checkpoint %s: %s; going on", ck_path,
+				tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
 				    err.msg);
 			}
 			if (stop_signal) {
-				char *cmd = resume_command(argc, argv, ck_path);
+				char *cmd = resume_command(argc, argv, o.ck_path);
 
 				if (rc_table_end(&table, &err) != 0 ||
 				    rc_atomic_commit(&out, &err) != 0)
 					rc_atomic_abort(&out);
 				tool_fail(&t, "interrupted by signal %d after pressure %zu "
 				    "of %zu; state saved in %s; resume with: %s%s",
-				    (int)stop_signal, k + 1, npressures, ck_path,
+				    (int)stop_signal, k + 1, npressures, o.ck_path,
 				    cmd ? cmd : "", input == NULL || rc_is_stdio(input) ?
 				    " (with the same indenter on standard input)" : "");
 			}
 		}
 	}
-	if (ck_every > 0) {
+	if (o.ck_every > 0) {
 		struct itimerval off;
 
 		memset(&off, 0, sizeof(off));
@@ -720,47 +541,47 @@ main(int argc, char **argv)
 		rc_atomic_abort(&out);
 		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
 	}
-	if (!fd)
+	if (!o.fd)
 		rc_fft_free(&fft);
 
 	/* Fields of the last pressure, only those asked for, one at a time. */
 	{
-		const char *method_name = rc_method_name(so.method);
+		const char *method_name = rc_method_name(o.so.method);
 		const double *u = rc_solver_displacement(solver);
 		const double *sigma = rc_solver_pressure(solver);
 		const unsigned char *mask = rc_solver_contact(solver);
 		size_t np = rc_grid_size(h);
 		rc_grid *g;
 
-		if (displacement_path != NULL) {
+		if (o.field[GFMD_DISPLACEMENT] != NULL) {
 			g = field_grid(&t, h, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-			    modulus, method_name);
+			    o.modulus, method_name);
 			memcpy(g->z, u, np * sizeof(double));
-			tool_write_grid(&t, g, displacement_path);
+			tool_write_grid(&t, g, o.field[GFMD_DISPLACEMENT]);
 			rc_grid_free(g);
 		}
-		if (gap_path != NULL) {
-			g = field_grid(&t, h, RC_KIND_GAP, last_p, last_p_star, modulus,
+		if (o.field[GFMD_GAP] != NULL) {
+			g = field_grid(&t, h, RC_KIND_GAP, last_p, last_p_star, o.modulus,
 			    method_name);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = u[k] - h->z[k];
-			tool_write_grid(&t, g, gap_path);
+			tool_write_grid(&t, g, o.field[GFMD_GAP]);
 			rc_grid_free(g);
 		}
-		if (pressure_path != NULL) {
+		if (o.field[GFMD_PRESSURE] != NULL) {
 			g = field_grid(&t, h, RC_KIND_PRESSURE, last_p, last_p_star,
-			    modulus, method_name);
+			    o.modulus, method_name);
 			memcpy(g->z, sigma, np * sizeof(double));
-			tool_write_grid(&t, g, pressure_path);
+			tool_write_grid(&t, g, o.field[GFMD_PRESSURE]);
 			rc_grid_free(g);
 		}
-		if (contact_path != NULL || t.png != NULL) {
-			g = field_grid(&t, h, RC_KIND_MASK, last_p, last_p_star, modulus,
+		if (o.field[GFMD_CONTACT] != NULL || t.png != NULL) {
+			g = field_grid(&t, h, RC_KIND_MASK, last_p, last_p_star, o.modulus,
 			    method_name);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = mask[k] != 0;
-			if (contact_path != NULL)
-				tool_write_grid(&t, g, contact_path);
+			if (o.field[GFMD_CONTACT] != NULL)
+				tool_write_grid(&t, g, o.field[GFMD_CONTACT]);
 			if (t.png != NULL) {
 				rc_png_opts po;
 				rc_png_defaults(&po);
@@ -777,15 +598,14 @@ main(int argc, char **argv)
 		status = 1;
 	}
 	/* The run is complete: its checkpoint would only resume it again. */
-	if (ck_path != NULL && unlink(ck_path) != 0 && errno != ENOENT)
-		tool_warn(&t, "%s: %s", ck_path, strerror(errno));
-	if (ck_path != NULL || resume_path != NULL)
+	if (o.ck_path != NULL && unlink(o.ck_path) != 0 && errno != ENOENT)
+		tool_warn(&t, "%s: %s", o.ck_path, strerror(errno));
+	if (o.ck_path != NULL || o.resume_path != NULL)
 		rc_checkpoint_free(&ck);
-	if (resume_path != NULL)
+	if (o.resume_path != NULL)
 		rc_checkpoint_free(&saved);
 	rc_solver_free(solver);
 	rc_grid_free(h);
-	free(reduced);
-	free(absolute);
+	gfmd_opts_free(&o);
 	return tool_exit(&t, status);
 }

@@ -117,16 +117,6 @@ num(const struct tool *t, rc_row *r, const char *name, double v)
 		tool_fail(t, "out of memory");
 }
 
-static double
-seconds_since(const struct timespec *t0)
-{
-	struct timespec t1;
-
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	return (double)(t1.tv_sec - t0->tv_sec) + 1e-9 * (double)(t1.tv_nsec -
-	    t0->tv_nsec);
-}
-
 static void
 scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft)
@@ -135,15 +125,14 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	rc_err err;
 	rc_row r;
 	struct out o;
-	struct timespec t0;
 	double gbar, seconds;
 	char name[8];
 
-	clock_gettime(CLOCK_MONOTONIC, &t0);
+	seconds = tool_clock();
 	if (rc_rms_gradient(g, fft, &gbar, &err) != 0 ||
 	    rc_stats_compute_fft(g, mask, m, fft, &s, &err) != 0)
 		tool_fail(t, "%s", err.msg);
-	seconds = seconds_since(&t0);
+	seconds = tool_clock() - seconds;
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||

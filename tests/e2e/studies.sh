@@ -49,20 +49,20 @@ check "thought: flipping a w = 2 surface lowers a_r by more than 10%" awk -v a="
 # wide band of every published value (1.3 .. 4; small grids, one seed);
 # adding a pressure solves only its surfaces (2 schedules x 2 grids).
 K=kappa-pressure
-make -s -j2 -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1" SEEDS=1 EF_REF=0.125 >"$T_TMP/k.log" 2>&1
+make -s -j2 -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1" SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125 >"$T_TMP/k.log" 2>&1
 check "kappa-pressure: make runs" test -s "$T_TMP/$K/kappa.png"
-check_status "kappa-pressure: second make has nothing to do" 0 make -q -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1" SEEDS=1 EF_REF=0.125
+check_status "kappa-pressure: second make has nothing to do" 0 make -q -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1" SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125
 for c in H0.8+const+w0 H0.8+ft+w0; do
 	check_range "kappa-pressure: $c kappa at p* = 0.1" "$(pick "$T_TMP/$K/kappa.tsv" kappa curve "$c")" 1.3 4
 done
-n=$(make -n -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1 0.05" SEEDS=1 EF_REF=0.125 | grep -c gfmd-solve)
+n=$(make -n -C "$S/$K" BIN="$RC_BIN" OUT="$T_TMP/$K" HS=0.8 PRESSURES="0.2 0.1 0.05" SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125 | grep -c gfmd-solve)
 check_rel "kappa-pressure: a new pressure solves 4 surfaces, nothing else" "$n" 4 0
 
 # anisotropy: Peklenik 4 on (n/4) x 4n grids; kappa_c finite and in band.
 A=anisotropy
-make -s -j2 -C "$S/$A" BIN="$RC_BIN" OUT="$T_TMP/$A" HS=0.8 PRESSURES=0.1 SEEDS=1 EF_REF=0.125 >"$T_TMP/a.log" 2>&1
+make -s -j2 -C "$S/$A" BIN="$RC_BIN" OUT="$T_TMP/$A" HS=0.8 PRESSURES=0.1 SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125 >"$T_TMP/a.log" 2>&1
 check "anisotropy: make runs" test -s "$T_TMP/$A/kappa.png"
-check_status "anisotropy: second make has nothing to do" 0 make -q -C "$S/$A" BIN="$RC_BIN" OUT="$T_TMP/$A" HS=0.8 PRESSURES=0.1 SEEDS=1 EF_REF=0.125
+check_status "anisotropy: second make has nothing to do" 0 make -q -C "$S/$A" BIN="$RC_BIN" OUT="$T_TMP/$A" HS=0.8 PRESSURES=0.1 SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125
 check_range "anisotropy: kappa_c" "$(col "$T_TMP/$A/kappa.tsv" kappa_c)" 1.2 3
 
 # warping: w = 2 (blunt peaks) gives more contact than w = -2 at the same
@@ -70,9 +70,9 @@ check_range "anisotropy: kappa_c" "$(col "$T_TMP/$A/kappa.tsv" kappa_c)" 1.2 3
 # scatter at these sizes); the height histogram is a probability (fractions
 # add up to 1 to the printed precision).
 W=warping
-make -s -j2 -C "$S/$W" BIN="$RC_BIN" OUT="$T_TMP/$W" WARPS="-2 2" PRESSURES=0.1 SEEDS=1 EF_REF=0.125 HIST_N=64 >"$T_TMP/w.log" 2>&1
+make -s -j2 -C "$S/$W" BIN="$RC_BIN" OUT="$T_TMP/$W" WARPS="-2 2" PRESSURES=0.1 SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125 HIST_N=64 >"$T_TMP/w.log" 2>&1
 check "warping: make runs" test -s "$T_TMP/$W/heights.png"
-check_status "warping: second make has nothing to do" 0 make -q -C "$S/$W" BIN="$RC_BIN" OUT="$T_TMP/$W" WARPS="-2 2" PRESSURES=0.1 SEEDS=1 EF_REF=0.125 HIST_N=64
+check_status "warping: second make has nothing to do" 0 make -q -C "$S/$W" BIN="$RC_BIN" OUT="$T_TMP/$W" WARPS="-2 2" PRESSURES=0.1 SEEDS=1 EPS_C="0.5 0.25" EF_REF=0.125 HIST_N=64
 kp=$(pick "$T_TMP/$W/kappa.tsv" kappa curve H0.8+const+w2)
 km=$(pick "$T_TMP/$W/kappa.tsv" kappa curve H0.8+const+w-2)
 check "warping: kappa(w=2)=$kp > kappa(w=-2)=$km" awk -v a="$kp" -v b="$km" 'BEGIN { exit !(a > b && b > 0) }'
@@ -81,9 +81,9 @@ check_rel "warping: histogram fractions add up to 1" \
 
 # nayak: the Nayak parameter grows as eps_f falls (as eps_f^(-2H)).
 N=nayak
-make -s -j2 -C "$S/$N" BIN="$RC_BIN" OUT="$T_TMP/$N" HS=0.8 SPECTRA=cutoff EPS_F="0.25 0.125" SEEDS=1 >"$T_TMP/n.log" 2>&1
+make -s -j2 -C "$S/$N" BIN="$RC_BIN" OUT="$T_TMP/$N" HS=0.8 SPECTRA=cutoff EPS_F="0.25 0.125" SEEDS=1 EPS_C="0.5 0.25" >"$T_TMP/n.log" 2>&1
 check "nayak: make runs" test -s "$T_TMP/$N/nayak.png"
-check_status "nayak: second make has nothing to do" 0 make -q -C "$S/$N" BIN="$RC_BIN" OUT="$T_TMP/$N" HS=0.8 SPECTRA=cutoff EPS_F="0.25 0.125" SEEDS=1
+check_status "nayak: second make has nothing to do" 0 make -q -C "$S/$N" BIN="$RC_BIN" OUT="$T_TMP/$N" HS=0.8 SPECTRA=cutoff EPS_F="0.25 0.125" SEEDS=1 EPS_C="0.5 0.25"
 n1=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.25)
 n2=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.125)
 check "nayak: Nayak(eps_f=1/8)=$n2 > Nayak(eps_f=1/4)=$n1" awk -v a="$n2" -v b="$n1" 'BEGIN { exit !(a > b && b > 0) }'

@@ -64,6 +64,13 @@ done
 surfstat -q -o t.tsv s.surf
 check_range "surfstat: plan_seconds column" "$(col t.tsv plan_seconds)" 0 1e9
 check_range "surfstat: seconds column" "$(col t.tsv seconds)" 0 1e9
+# gfmd-solve: the set-up (planning) time once per process, the same on
+# every row, apart from each solve's own time
+surfgen -n 64 --seed 2 | gfmd-solve -q -p 0.02,0.05 -o t.tsv
+check_rel "gfmd-solve: one plan_seconds for every row" \
+    "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "plan_seconds") c = i; next }
+	{ v[$c] = 1 } END { for (x in v) n++; print n }' t.tsv)" 1 0
+check_range "gfmd-solve: plan_seconds column" "$(col t.tsv plan_seconds | head -1)" 0 1e9
 
 # --- gfmd-solve, both methods ----------------------------------------------
 surfgen -n 128 --seed 5 -o h.surf

@@ -8,6 +8,9 @@ RC_TOP=$(cd "$(dirname "$0")/../.." && pwd)
 . "$RC_TOP/tests/e2e/lib.sh"
 # A hung collective must fail the test, not the CI run.
 MPIRUN="timeout 120 mpirun --oversubscribe --allow-run-as-root"
+# Containers often forbid the ptrace-based single-copy transfer of
+# OpenMPI's shared-memory transport; the copy-in/copy-out path always works.
+OMPI_MCA_btl_vader_single_copy_mechanism=none; export OMPI_MCA_btl_vader_single_copy_mechanism
 cd "$T_TMP" || exit 1
 
 # The values of a .surf file, one per line (od prints the shortest

@@ -13,6 +13,8 @@
 
 #include "atomic.h"
 #include "common.h"
+#include "gfmd_opts.h"
+#include "gfmd_row.h"
 #include "contact.h"
 #include "mpi/decomp.h"
 #include "mpi/dsolver.h"
@@ -20,19 +22,6 @@
 #include "solver.h"
 #include "table.h"
 
-enum {
-	OPT_PRESSURE_ABS = OPT_TOOL_FIRST,
-	OPT_METHOD,
-	OPT_TOL,
-	OPT_MAX_ITER,
-	OPT_ALPHA,
-	OPT_INIT,
-	OPT_CONTACT,
-	OPT_GAP,
-	OPT_PRESSURE_FIELD,
-	OPT_DISPLACEMENT,
-	OPT_UNSUPPORTED
-};
 
 static void
 usage(void)
@@ -88,167 +77,86 @@ int
 main(int argc, char **argv)
 {
 	static const struct option longopts[] = {
-		{ "pressure-abs", required_argument, NULL, OPT_PRESSURE_ABS },
-		{ "method", required_argument, NULL, OPT_METHOD },
-		{ "tol", required_argument, NULL, OPT_TOL },
-		{ "max-iter", required_argument, NULL, OPT_MAX_ITER },
-		{ "alpha", required_argument, NULL, OPT_ALPHA },
-		{ "init", required_argument, NULL, OPT_INIT },
-		{ "contact", required_argument, NULL, OPT_CONTACT },
-		{ "gap", required_argument, NULL, OPT_GAP },
-		{ "pressure", required_argument, NULL, OPT_PRESSURE_FIELD },
-		{ "displacement", required_argument, NULL, OPT_DISPLACEMENT },
-		{ "fd", no_argument, NULL, OPT_UNSUPPORTED },
-		{ "checkpoint", required_argument, NULL, OPT_UNSUPPORTED },
-		{ "checkpoint-every", required_argument, NULL, OPT_UNSUPPORTED },
-		{ "resume", required_argument, NULL, OPT_UNSUPPORTED },
-		{ "json", no_argument, NULL, OPT_JSON },
-		{ "png", required_argument, NULL, OPT_PNG },
-		{ "version", no_argument, NULL, OPT_VERSION },
-		{ "help", no_argument, NULL, 'h' },
+		GFMD_LONGOPTS,
 		{ NULL, 0, NULL, 0 }
 	};
-	static const char optstring[] = "p:E:o:j:qL:h";
 	struct tool t;
-	rc_solver_opts so;
+	struct gfmd_opts o;
 	rc_solver *solver;
 	rc_grid *h;
 	rc_err err;
 	rc_atomic out;
 	rc_table_out table;
 	rc_row row;
-	double *reduced = NULL, *absolute = NULL, *height, gbar = 0, modulus = 1;
-	double alpha = RC_YASTREBOV_ALPHA, last_p = 0, last_p_star = 0;
-	size_t npressures, nreduced = 0, nabsolute = 0, nunconverged = 0, ny;
+	double *height, gbar = 0, last_p = 0, last_p_star = 0, plan_seconds;
+	size_t npressures, nunconverged = 0, ny;
 	size_t rows, j0, alloc;
-	const char *init = NULL, *fields[4] = { NULL, NULL, NULL, NULL };
-	static const char *field_opts[4] = { "--contact", "--gap", "--pressure",
-	    "--displacement" };
-	long n;
 	int c, rank, status = 0;
 
 	mpitool_init(&argc, &argv);
 	rank = rc_mpi_rank();
 	tool_init(&t, "gfmd-solve", argc, argv);
-	rc_solver_defaults(&so);
+	gfmd_opts_init(&o);
 	opterr = 0;
-	while ((c = getopt_long(argc, argv, optstring, longopts, NULL)) != -1) {
-		switch (c) {
-		case 'p':
-			free(reduced);
-			tool_double_list(&t, "-p", optarg, &reduced, &nreduced);
-			break;
-		case OPT_PRESSURE_ABS:
-			free(absolute);
-			tool_double_list(&t, "--pressure-abs", optarg, &absolute, &nabsolute);
-			break;
-		case 'E':
-			if (tool_double(&t, "-E", optarg, &modulus) == 0 && !(modulus > 0))
-				tool_bad(&t, "-E %s: the contact modulus must be positive", optarg);
-			break;
-		case OPT_METHOD:
-			if (strcmp(optarg, "fire") != 0)
-				tool_bad(&t, "--method %s: the MPI build has FIRE only "
-				    "(--method fire; use the serial gfmd-solve for cg)", optarg);
-			break;
-		case OPT_TOL:
-			if (tool_double(&t, "--tol", optarg, &so.tol) == 0 &&
-			    !(so.tol > 0 && so.tol < 1))
-				tool_bad(&t, "--tol %s: want a tolerance in (0, 1)", optarg);
-			break;
-		case OPT_MAX_ITER:
-			if (tool_long(&t, "--max-iter", optarg, &n) == 0) {
-				if (n < 1)
-					tool_bad(&t, "--max-iter %s: want at least 1", optarg);
-				else
-					so.max_iter = n;
-			}
-			break;
-		case OPT_ALPHA:
-			if (tool_double(&t, "--alpha", optarg, &alpha) == 0 &&
-			    !(alpha >= 0 && alpha <= 1))
-				tool_bad(&t, "--alpha %s: want a weight in [0, 1]", optarg);
-			break;
-		case OPT_INIT:
-			init = optarg;
-			break;
-		case OPT_CONTACT:
-		case OPT_GAP:
-		case OPT_PRESSURE_FIELD:
-		case OPT_DISPLACEMENT:
-			fields[c - OPT_CONTACT] = optarg;
-			break;
-		case OPT_UNSUPPORTED:
-			tool_bad(&t, "%s: not in the MPI build (use the serial gfmd-solve)",
-			    argv[optind - 1]);
-			break;
-		case 'h':
+	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
+		if (c == 'h') {
 			usage();
 			return tool_exit(&t, 0);
-		case '?':
-			if (optopt > 0 && optopt < 128 && strchr(optstring, optopt))
-				tool_bad(&t, "-%c: missing argument", optopt);
-			else if (optopt > 0 && optopt < 128)
-				tool_bad(&t, "-%c: unknown option", optopt);
-			else if (optopt != 0)
-				tool_bad(&t, "%s: missing argument", argv[optind - 1]);
-			else
-				tool_bad(&t, "%s: unknown option", argv[optind - 1]);
-			break;
-		default:
-			tool_common_option(&t, c, optarg);
 		}
+		gfmd_option(&t, &o, c, optarg, argv);
 	}
-	for (size_t k = 0; k < nreduced + nabsolute; k++)
-		if (!((k < nreduced ? reduced[k] : absolute[k - nreduced]) > 0)) {
-			tool_bad(&t, "-p, --pressure-abs: pressures must be positive");
-			break;
-		}
-	if (nreduced && nabsolute)
-		tool_bad(&t, "-p and --pressure-abs: give one of them, not both");
-	else if (!nreduced && !nabsolute && t.nbad == 0)
-		tool_bad(&t, "no pressure: give -p P[,P...] or --pressure-abs P[,P...]");
-	if (t.png != NULL || t.have_l)
-		tool_bad(&t, "--png, -L: not in the MPI build");
+	gfmd_opts_check(&t, &o, argc, argv);
+	/* What this build does not have is refused, never ignored. */
+	if (o.so.method != RC_METHOD_FIRE)
+		tool_bad(&t, "--method %s: the MPI build has FIRE only (--method "
+		    "fire; use the serial gfmd-solve for cg)",
+		    rc_method_name(o.so.method));
+	if (o.fd || o.ck_path != NULL || o.ck_every > 0 || o.resume_path != NULL ||
+	    t.png != NULL || t.have_l)
+		tool_bad(&t, "--fd, --checkpoint, --checkpoint-every, --resume, "
+		    "--png, -L: not in the MPI build (use the serial gfmd-solve)");
 	if (argc - optind != 1)
 		tool_bad(&t, "give one input FILE.surf (the MPI build reads no "
 		    "standard input)");
 	else
 		mpitool_check_surf(&t, "input", argv[optind]);
-	if (init != NULL)
-		mpitool_check_surf(&t, "--init", init);
-	for (int k = 0; k < 4; k++)
-		if (fields[k] != NULL)
-			mpitool_check_surf(&t, field_opts[k], fields[k]);
+	if (o.init != NULL)
+		mpitool_check_surf(&t, "--init", o.init);
+	for (int k = 0; k < GFMD_NFIELDS; k++)
+		if (o.field[k] != NULL)
+			mpitool_check_surf(&t, gfmd_field_option[k], o.field[k]);
 	tool_usage_check(&t);
-	npressures = nreduced ? nreduced : nabsolute;
+	npressures = o.nreduced ? o.nreduced : o.nabsolute;
 	mpitool_threads(&t);
 
 	if ((h = rc_mpi_surf_read(argv[optind], &ny, &height, &err)) == NULL)
 		tool_fail(&t, "%s: %s", argv[optind], err.msg);
-	so.modulus = modulus;
+	o.so.modulus = o.modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
-	so.measure = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
+	o.so.measure = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
 	    RC_FFT_MEASURE;
-	if ((solver = rc_mpi_solver_new(height, h->nx, ny, h->lx, h->ly, &so,
+	plan_seconds = MPI_Wtime();
+	if ((solver = rc_mpi_solver_new(height, h->nx, ny, h->lx, h->ly, &o.so,
 	    &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
+	plan_seconds = MPI_Wtime() - plan_seconds;
+	rc_mpi_max(&plan_seconds, 1);
 	rc_mpi_rows(h->nx, ny, &rows, &j0, &alloc);
 	gbar = rc_mpi_gbar(solver);
-	if (nreduced && !(gbar > 0))
+	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
 		    argv[optind]);
-	if (init != NULL) {
+	if (o.init != NULL) {
 		size_t init_ny;
 		double *u;
-		rc_grid *uh = rc_mpi_surf_read(init, &init_ny, &u, &err);
+		rc_grid *uh = rc_mpi_surf_read(o.init, &init_ny, &u, &err);
 
 		if (uh == NULL)
-			tool_fail(&t, "%s: %s", init, err.msg);
+			tool_fail(&t, "%s: %s", o.init, err.msg);
 		if (uh->nx != h->nx || init_ny != ny)
-			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", init,
+			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    uh->nx, init_ny, h->nx, ny);
 		if (rc_solver_set_displacement(solver, u, &err) != 0)
 			status = -1;
@@ -258,7 +166,7 @@ main(int argc, char **argv)
 			rc_mpi_max(&bad, 1);
 			if (bad)
 				tool_fail(&t, "%s: an initial displacement is not finite",
-				    init);
+				    o.init);
 		}
 		fftw_free(u);
 		rc_grid_free(uh);
@@ -271,9 +179,9 @@ main(int argc, char **argv)
 	for (size_t k = 0; k < npressures; k++) {
 		rc_solve_result res;
 		rc_contact_stats st;
-		double p = nreduced ? reduced[k] * modulus * gbar : absolute[k];
-		double p_star = nreduced ? reduced[k] :
-		    gbar > 0 ? p / (modulus * gbar) : NAN, mean_gap, seconds;
+		double p = o.nreduced ? o.reduced[k] * o.modulus * gbar : o.absolute[k];
+		double p_star = o.nreduced ? o.reduced[k] :
+		    gbar > 0 ? p / (o.modulus * gbar) : NAN, mean_gap, seconds;
 		double t0 = MPI_Wtime();
 		int r;
 
@@ -283,37 +191,20 @@ main(int argc, char **argv)
 		/* The slowest rank's wall time is the run's. */
 		seconds = MPI_Wtime() - t0;
 		rc_mpi_max(&seconds, 1);
-		if (rc_mpi_contact_analyse(solver, alpha, p, &gbar, &st, &err) != 0)
+		if (rc_mpi_contact_analyse(solver, o.alpha, p, &gbar, &st, &err) != 0)
 			tool_fail(&t, "p = %g: %s", p, err.msg);
 		mean_gap = rc_solver_mean_gap(solver);
-		rc_row_clear(&row);
-		if (rc_row_num(&row, "p_star", p_star) ||
-		    rc_row_num(&row, "p", p) ||
-		    rc_row_num(&row, "a_r", st.a_r) ||
-		    rc_row_int(&row, "n_c", (long long)st.n_c) ||
-		    rc_row_int(&row, "n_cl", (long long)st.n_cl) ||
-		    rc_row_int(&row, "n_tot", (long long)st.n_tot) ||
-		    rc_row_num(&row, "a_yastrebov", st.a_yastrebov) ||
-		    rc_row_num(&row, "gbar", gbar) ||
-		    rc_row_num(&row, "gbar_c", st.gbar_c) ||
-		    rc_row_num(&row, "gbar_c_prime", st.gbar_c_prime) ||
-		    rc_row_num(&row, "kappa", st.kappa) ||
-		    rc_row_num(&row, "kappa_c", st.kappa_c) ||
-		    rc_row_num(&row, "mean_gap", mean_gap) ||
-		    rc_row_num(&row, "elastic_energy",
-		    rc_solver_elastic_energy(solver)) ||
-		    rc_row_int(&row, "n_patches", (long long)st.n_patches) ||
-		    rc_row_num(&row, "patch_size_char", st.patch_size_char) ||
-		    rc_row_int(&row, "iterations", res.iterations) ||
-		    rc_row_num(&row, "residual", res.residual) ||
-		    rc_row_num(&row, "seconds", seconds) ||
-		    rc_row_str(&row, "method", "fire") ||
-		    rc_row_int(&row, "nx", (long long)h->nx) ||
-		    rc_row_int(&row, "ny", (long long)ny) ||
-		    rc_row_num(&row, "lx", h->lx) ||
-		    rc_row_num(&row, "ly", h->ly) ||
-		    rc_row_meta(&row, h))
-			tool_fail(&t, "out of memory");
+		{
+			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
+			    .stats = &st, .mean_gap = mean_gap,
+			    .elastic_energy = rc_solver_elastic_energy(solver),
+			    .iterations = res.iterations, .residual = res.residual,
+			    .seconds = seconds, .plan_seconds = plan_seconds,
+			    .method = "fire", .indenter = h, .nx = h->nx, .ny = ny };
+
+			if (gfmd_result_row(&row, &in) != 0)
+				tool_fail(&t, "out of memory");
+		}
 		if (rank == 0 && (rc_table_write(&table, &row, &err) != 0 ||
 		    fflush(out.fp) != 0))
 			fail0(&t, &out, t.out ? t.out : "standard output",
@@ -322,7 +213,7 @@ main(int argc, char **argv)
 			nunconverged++;
 			tool_warn(&t, "p = %g: not converged after %ld iterations "
 			    "(residual %.3g, tolerance %.3g); row written, going on",
-			    p, res.iterations, res.residual, so.tol);
+			    p, res.iterations, res.residual, o.so.tol);
 		}
 		last_p = p;
 		last_p_star = p_star;
@@ -333,33 +224,33 @@ main(int argc, char **argv)
 		fail0(&t, &out, t.out ? t.out : "standard output", err.msg);
 
 	/* Fields of the last pressure, only those asked for. */
-	if (fields[0] != NULL || fields[1] != NULL) {
+	if (o.field[GFMD_CONTACT] != NULL || o.field[GFMD_GAP] != NULL) {
 		const double *u = rc_solver_displacement(solver);
 		const unsigned char *mask = rc_solver_contact(solver);
 		double *f = malloc((rows * h->nx + 1) * sizeof(double));
 
 		if (f == NULL)
 			tool_fail(&t, "out of memory");
-		if (fields[0] != NULL) {
+		if (o.field[GFMD_CONTACT] != NULL) {
 			for (size_t k = 0; k < rows * h->nx; k++)
 				f[k] = mask[k] != 0;
 			write_field(&t, h, ny, RC_KIND_MASK, last_p, last_p_star,
-			    modulus, f, fields[0]);
+			    o.modulus, f, o.field[GFMD_CONTACT]);
 		}
-		if (fields[1] != NULL) {
+		if (o.field[GFMD_GAP] != NULL) {
 			for (size_t k = 0; k < rows * h->nx; k++)
 				f[k] = u[k] - height[k];
 			write_field(&t, h, ny, RC_KIND_GAP, last_p, last_p_star,
-			    modulus, f, fields[1]);
+			    o.modulus, f, o.field[GFMD_GAP]);
 		}
 		free(f);
 	}
-	if (fields[2] != NULL)
-		write_field(&t, h, ny, RC_KIND_PRESSURE, last_p, last_p_star, modulus,
-		    rc_solver_pressure(solver), fields[2]);
-	if (fields[3] != NULL)
+	if (o.field[GFMD_PRESSURE] != NULL)
+		write_field(&t, h, ny, RC_KIND_PRESSURE, last_p, last_p_star, o.modulus,
+		    rc_solver_pressure(solver), o.field[GFMD_PRESSURE]);
+	if (o.field[GFMD_DISPLACEMENT] != NULL)
 		write_field(&t, h, ny, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-		    modulus, rc_solver_displacement(solver), fields[3]);
+		    o.modulus, rc_solver_displacement(solver), o.field[GFMD_DISPLACEMENT]);
 	if (nunconverged) {
 		tool_warn(&t, "%zu of %zu pressures did not converge", nunconverged,
 		    npressures);
@@ -368,7 +259,6 @@ main(int argc, char **argv)
 	rc_solver_free(solver);
 	fftw_free(height);
 	rc_grid_free(h);
-	free(reduced);
-	free(absolute);
+	gfmd_opts_free(&o);
 	return tool_exit(&t, status);
 }

@@ -7,9 +7,7 @@
  * or gradient takes Allreduce'd sums (the gradient one distributed r2c).
  * The options are surfgen(1)'s. */
 #include <complex.h>
-#include <errno.h>
 #include <fftw3-mpi.h>
-#include <getopt.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,40 +16,12 @@
 #include "mpi/decomp.h"
 #include "mpi/dspectral.h"
 #include "mpitool.h"
-#include "synth.h"
-
-enum {
-	OPT_LAMBDA_R = OPT_TOOL_FIRST,
-	OPT_LAMBDA_S,
-	OPT_ROLLOFF,
-	OPT_PEKLENIK,
-	OPT_SEED,
-	OPT_RMS_GRADIENT,
-	OPT_RMS_HEIGHT,
-	OPT_GAUSSIAN,
-	OPT_TYPE,
-	OPT_EXPONENT,
-	OPT_RADIUS,
-	OPT_WAVELENGTH,
-	OPT_AMPLITUDE
-};
+#include "surfgen_opts.h"
 
 static const struct option longopts[] = {
 	{ "help", no_argument, NULL, 'h' },
 	{ "version", no_argument, NULL, OPT_VERSION },
-	{ "lambda-r", required_argument, NULL, OPT_LAMBDA_R },
-	{ "lambda-s", required_argument, NULL, OPT_LAMBDA_S },
-	{ "rolloff", no_argument, NULL, OPT_ROLLOFF },
-	{ "peklenik", required_argument, NULL, OPT_PEKLENIK },
-	{ "seed", required_argument, NULL, OPT_SEED },
-	{ "rms-gradient", required_argument, NULL, OPT_RMS_GRADIENT },
-	{ "rms-height", required_argument, NULL, OPT_RMS_HEIGHT },
-	{ "gaussian-amplitudes", no_argument, NULL, OPT_GAUSSIAN },
-	{ "type", required_argument, NULL, OPT_TYPE },
-	{ "exponent", required_argument, NULL, OPT_EXPONENT },
-	{ "radius", required_argument, NULL, OPT_RADIUS },
-	{ "wavelength", required_argument, NULL, OPT_WAVELENGTH },
-	{ "amplitude", required_argument, NULL, OPT_AMPLITUDE },
+	SURFGEN_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -70,19 +40,6 @@ usage(void)
 "they mean in surfgen(1); -j N: threads per rank (default\n"
 "OMP_NUM_THREADS, else 1).  Not in this build: --png, --json, --wisdom,\n"
 "--fft-effort, standard output.\n");
-}
-
-static void
-positive(struct tool *t, const char *opt, const char *arg, double *v)
-{
-	double d;
-
-	if (tool_double(t, opt, arg, &d) != 0)
-		return;
-	if (!(d > 0))
-		tool_bad(t, "%s %s: must be positive", opt, arg);
-	else
-		*v = d;
 }
 
 /* A harmonic, sine, egg-box or flat surface: rows, then the normalisation
@@ -138,128 +95,38 @@ int
 main(int argc, char **argv)
 {
 	struct tool t;
+	struct surfgen_opts o;
 	rc_synth_params p;
 	rc_err err;
 	rc_grid *head;
 	fftw_complex *spec;
 	fftw_plan plan;
 	size_t rows, j0, alloc, nxc;
-	double *sums, total = 0, target, scale, v, *real;
-	unsigned long long seed;
-	char *end;
-	int opt, type, selfaffine_opt = 0, have_exp = 0, have_rad = 0;
-	int have_wave = 0, have_amp = 0;
+	double *sums, total = 0, target, scale, *real;
+	int opt;
 
 	mpitool_init(&argc, &argv);
 	tool_init(&t, "surfgen", argc, argv);
-	rc_synth_defaults(&p);
+	surfgen_opts_init(&o);
 	opterr = 0;
-	while ((opt = getopt_long(argc, argv, "hn:L:H:o:q", longopts, NULL)) != -1) {
-		if (opt != 'L' && tool_common_option(&t, opt, optarg))
-			continue;
-		switch (opt) {
-		case 'h':
+	while ((opt = getopt_long(argc, argv, "hn:L:H:o:j:q", longopts, NULL)) != -1) {
+		if (opt == 'h') {
 			usage();
 			return tool_exit(&t, 0);
-		case 'n':
-			tool_size_pair(&t, "-n", optarg, &p.nx, &p.ny);
-			break;
-		case 'L':
-			tool_length_pair(&t, "-L", optarg, &p.lx, &p.ly);
-			break;
-		case 'H':
-			selfaffine_opt = 1;
-			if (tool_double(&t, "-H", optarg, &v) == 0) {
-				if (!(v > 0 && v < 1))
-					tool_bad(&t, "-H %s: the Hurst exponent must be in (0, 1)",
-					    optarg);
-				else
-					p.hurst = v;
-			}
-			break;
-		case OPT_LAMBDA_R:
-			selfaffine_opt = 1;
-			positive(&t, "--lambda-r", optarg, &p.lambda_r);
-			break;
-		case OPT_LAMBDA_S:
-			selfaffine_opt = 1;
-			positive(&t, "--lambda-s", optarg, &p.lambda_s);
-			break;
-		case OPT_ROLLOFF:
-			selfaffine_opt = 1;
-			p.rolloff = 1;
-			break;
-		case OPT_PEKLENIK:
-			selfaffine_opt = 1;
-			positive(&t, "--peklenik", optarg, &p.peklenik);
-			break;
-		case OPT_SEED:
-			selfaffine_opt = 1;
-			errno = 0;
-			seed = strtoull(optarg, &end, 10);
-			if (optarg[0] < '0' || optarg[0] > '9' || *end != '\0' ||
-			    errno == ERANGE)
-				tool_bad(&t, "--seed %s: want an integer 0 to 2^64-1", optarg);
-			else
-				p.seed = (uint64_t)seed;
-			break;
-		case OPT_RMS_GRADIENT:
-			positive(&t, "--rms-gradient", optarg, &p.rms_gradient);
-			break;
-		case OPT_RMS_HEIGHT:
-			positive(&t, "--rms-height", optarg, &p.rms_height);
-			break;
-		case OPT_GAUSSIAN:
-			selfaffine_opt = 1;
-			p.gaussian_amplitudes = 1;
-			break;
-		case OPT_TYPE:
-			if ((type = rc_surface_type_parse(optarg)) < 0)
-				tool_bad(&t, "--type %s: want selfaffine, harmonic, sine, "
-				    "eggbox or flat", optarg);
-			else
-				p.type = (enum rc_surface_type)type;
-			break;
-		case OPT_EXPONENT:
-			positive(&t, "--exponent", optarg, &p.exponent);
-			have_exp = 1;
-			break;
-		case OPT_RADIUS:
-			positive(&t, "--radius", optarg, &p.radius);
-			have_rad = 1;
-			break;
-		case OPT_WAVELENGTH:
-			positive(&t, "--wavelength", optarg, &p.wavelength);
-			have_wave = 1;
-			break;
-		case OPT_AMPLITUDE:
-			if (tool_double(&t, "--amplitude", optarg, &v) == 0)
-				p.amplitude = v;
-			have_amp = 1;
-			break;
-		default:
-			tool_bad(&t, "%s: unknown option or missing value", argv[optind - 1]);
-			break;
 		}
+		if ((opt != 'L' && tool_common_option(&t, opt, optarg)) ||
+		    surfgen_option(&t, &o, opt, optarg))
+			continue;
+		tool_bad(&t, "%s: unknown option or missing value", argv[optind - 1]);
 	}
 	if (optind < argc)
 		tool_bad(&t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
 	if (t.png != NULL || t.json)
 		tool_bad(&t, "--png, --json: not in the MPI build");
-	if (p.rms_gradient > 0 && p.rms_height > 0)
-		tool_bad(&t, "--rms-gradient and --rms-height: give one, not both");
-	if (p.type != RC_SURF_SELFAFFINE && selfaffine_opt)
-		tool_bad(&t, "-H, --lambda-r, --lambda-s, --rolloff, --peklenik, "
-		    "--seed, --gaussian-amplitudes: only for --type selfaffine, not %s",
-		    rc_surface_type_name(p.type));
-	if (p.type != RC_SURF_HARMONIC && (have_exp || have_rad))
-		tool_bad(&t, "--exponent, --radius: only for --type harmonic");
-	if (p.type != RC_SURF_SINE && p.type != RC_SURF_EGGBOX && (have_wave || have_amp))
-		tool_bad(&t, "--wavelength, --amplitude: only for --type sine or eggbox");
+	surfgen_opts_check(&t, &o);
 	mpitool_check_surf(&t, "-o", t.out);
-	if (!(p.rms_gradient > 0 && p.rms_height > 0) && rc_synth_check(&p, &err) != 0)
-		tool_bad(&t, "%s", err.msg);
 	tool_usage_check(&t);
+	p = o.p;
 
 	mpitool_threads(&t);
 	if (p.type != RC_SURF_SELFAFFINE)

@@ -1,0 +1,163 @@
+/* gfmd_opts.c - gfmd-solve's options (see gfmd_opts.h). */
+#include "gfmd_opts.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "atomic.h"
+#include "contact.h"
+
+const char *const gfmd_field_option[GFMD_NFIELDS] = { "--contact", "--gap",
+    "--pressure", "--displacement" };
+
+void
+gfmd_opts_init(struct gfmd_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	rc_solver_defaults(&o->so);
+	o->modulus = 1;
+	o->alpha = RC_YASTREBOV_ALPHA;
+}
+
+void
+gfmd_opts_free(struct gfmd_opts *o)
+{
+	free(o->reduced);
+	free(o->absolute);
+	o->reduced = o->absolute = NULL;
+}
+
+/* A list of pressures, each positive. */
+static void
+pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
+    size_t *n)
+{
+	free(*v);
+	*v = NULL;
+	*n = 0;
+	if (tool_double_list(t, opt, arg, v, n) != 0)
+		return;
+	for (size_t i = 0; i < *n; i++)
+		if (!((*v)[i] > 0)) {
+			tool_bad(t, "%s: pressure %g must be positive", opt, (*v)[i]);
+			return;
+		}
+}
+
+void
+gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
+    char **argv)
+{
+	long n;
+	int method;
+
+	switch (c) {
+	case 'p':
+		pressure_list(t, "-p", arg, &o->reduced, &o->nreduced);
+		break;
+	case OPT_PRESSURE_ABS:
+		pressure_list(t, "--pressure-abs", arg, &o->absolute, &o->nabsolute);
+		break;
+	case 'E':
+		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
+			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
+		o->given_e = 1;
+		break;
+	case OPT_METHOD:
+		if ((method = rc_method_parse(arg)) < 0)
+			tool_bad(t, "--method %s: want fire or cg", arg);
+		else
+			o->so.method = (enum rc_method)method;
+		o->given_method = 1;
+		break;
+	case OPT_TOL:
+		if (tool_double(t, "--tol", arg, &o->so.tol) == 0 &&
+		    !(o->so.tol > 0 && o->so.tol < 1))
+			tool_bad(t, "--tol %s: want a tolerance in (0, 1)", arg);
+		o->given_tol = 1;
+		break;
+	case OPT_MAX_ITER:
+		if (tool_long(t, "--max-iter", arg, &n) == 0) {
+			if (n < 1)
+				tool_bad(t, "--max-iter %s: want at least 1", arg);
+			else
+				o->so.max_iter = n;
+		}
+		o->given_max_iter = 1;
+		break;
+	case OPT_ALPHA:
+		if (tool_double(t, "--alpha", arg, &o->alpha) == 0 &&
+		    !(o->alpha >= 0 && o->alpha <= 1))
+			tool_bad(t, "--alpha %s: want a weight in [0, 1]", arg);
+		o->given_alpha = 1;
+		break;
+	case OPT_INIT:
+		o->init = arg;
+		break;
+	case OPT_CONTACT:
+	case OPT_GAP:
+	case OPT_PRESSURE_FIELD:
+	case OPT_DISPLACEMENT:
+		o->field[c - OPT_CONTACT] = arg;
+		break;
+	case OPT_FD:
+		o->fd = 1;
+		o->given_fd = 1;
+		break;
+	case OPT_CHECKPOINT:
+		o->ck_path = arg;
+		break;
+	case OPT_CHECKPOINT_EVERY:
+		if (tool_double(t, "--checkpoint-every", arg, &o->ck_every) == 0 &&
+		    !(o->ck_every > 0 && o->ck_every <= 1e6))
+			tool_bad(t, "--checkpoint-every %s: want minutes in (0, 1e6]",
+			    arg);
+		break;
+	case OPT_RESUME:
+		o->resume_path = arg;
+		break;
+	case '?':
+		/* optopt: the option whose argument is missing (a long
+		 * option's code, or a letter), 0 for an unknown long one. */
+		if (optopt > 0 && optopt < 128 && strchr(GFMD_OPTSTRING, optopt))
+			tool_bad(t, "-%c: missing argument", optopt);
+		else if (optopt > 0 && optopt < 128)
+			tool_bad(t, "-%c: unknown option", optopt);
+		else if (optopt != 0)
+			tool_bad(t, "%s: missing argument", argv[optind - 1]);
+		else
+			tool_bad(t, "%s: unknown option", argv[optind - 1]);
+		break;
+	default:
+		tool_common_option(t, c, arg);
+	}
+}
+
+void
+gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
+{
+	if (o->nreduced && o->nabsolute)
+		tool_bad(t, "-p and --pressure-abs: give one of them, not both");
+	else if (!o->nreduced && !o->nabsolute && t->nbad == 0 &&
+	    o->resume_path == NULL)
+		tool_bad(t, "no pressure: give -p P[,P...] or --pressure-abs P[,P...]");
+	if (o->ck_every > 0 && o->ck_path == NULL)
+		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");
+	if (o->ck_path != NULL && rc_is_stdio(o->ck_path))
+		tool_bad(t, "--checkpoint -: give a file name");
+	if (o->resume_path != NULL && o->init != NULL)
+		tool_bad(t, "--resume and --init: the checkpoint is the start; "
+		    "give one of them");
+	if (argc - optind > 1)
+		tool_bad(t, "%s: one input file at most", argv[optind + 1]);
+	for (int k = 0; k < GFMD_NFIELDS; k++) {
+		if (o->field[k] != NULL && rc_is_stdio(o->field[k]))
+			tool_bad(t, "%s %s: fields go to files; standard output "
+			    "carries the result table", gfmd_field_option[k],
+			    o->field[k]);
+		else
+			tool_check_grid_path(t, gfmd_field_option[k], o->field[k]);
+	}
+	if (t->png != NULL && rc_is_stdio(t->png))
+		tool_bad(t, "--png -: give a file name");
+}

@@ -1,0 +1,77 @@
+/* gfmd_opts.h - gfmd-solve's options, shared by the serial tool and its MPI
+ * build: one table, one parser, one set of checks, so that a command line
+ * means the same in both (the MPI build then refuses what it lacks). */
+#ifndef RC_GFMD_OPTS_H
+#define RC_GFMD_OPTS_H
+
+#include <getopt.h>
+
+#include "common.h"
+#include "solver.h"
+
+enum {
+	OPT_PRESSURE_ABS = OPT_TOOL_FIRST,
+	OPT_METHOD,
+	OPT_TOL,
+	OPT_MAX_ITER,
+	OPT_ALPHA,
+	OPT_INIT,
+	OPT_CONTACT,		/* the four fields, in gfmd_field order */
+	OPT_GAP,
+	OPT_PRESSURE_FIELD,
+	OPT_DISPLACEMENT,
+	OPT_FD,
+	OPT_CHECKPOINT,
+	OPT_CHECKPOINT_EVERY,
+	OPT_RESUME
+};
+
+#define GFMD_OPTSTRING "p:E:o:j:qL:h"
+#define GFMD_LONGOPTS \
+	{ "pressure-abs", required_argument, NULL, OPT_PRESSURE_ABS }, \
+	{ "method", required_argument, NULL, OPT_METHOD }, \
+	{ "tol", required_argument, NULL, OPT_TOL }, \
+	{ "max-iter", required_argument, NULL, OPT_MAX_ITER }, \
+	{ "alpha", required_argument, NULL, OPT_ALPHA }, \
+	{ "init", required_argument, NULL, OPT_INIT }, \
+	{ "contact", required_argument, NULL, OPT_CONTACT }, \
+	{ "gap", required_argument, NULL, OPT_GAP }, \
+	{ "pressure", required_argument, NULL, OPT_PRESSURE_FIELD }, \
+	{ "displacement", required_argument, NULL, OPT_DISPLACEMENT }, \
+	{ "fd", no_argument, NULL, OPT_FD }, \
+	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT }, \
+	{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY }, \
+	{ "resume", required_argument, NULL, OPT_RESUME }, \
+	{ "json", no_argument, NULL, OPT_JSON }, \
+	{ "png", required_argument, NULL, OPT_PNG }, \
+	{ "version", no_argument, NULL, OPT_VERSION }, \
+	{ "help", no_argument, NULL, 'h' }
+
+enum gfmd_field { GFMD_CONTACT, GFMD_GAP, GFMD_PRESSURE, GFMD_DISPLACEMENT,
+	GFMD_NFIELDS };
+extern const char *const gfmd_field_option[GFMD_NFIELDS];
+
+struct gfmd_opts {
+	rc_solver_opts so;
+	double *reduced, *absolute;	/* -p and --pressure-abs lists */
+	size_t nreduced, nabsolute;
+	double modulus, alpha, ck_every;
+	int fd;
+	const char *init, *ck_path, *resume_path;
+	const char *field[GFMD_NFIELDS];
+	/* given on the command line (a resumed run takes the rest from its
+	 * checkpoint) */
+	int given_method, given_tol, given_e, given_alpha, given_fd;
+	int given_max_iter;
+};
+
+void gfmd_opts_init(struct gfmd_opts *o);
+void gfmd_opts_free(struct gfmd_opts *o);
+/* One option c of getopt_long (with GFMD_OPTSTRING and GFMD_LONGOPTS) that
+ * is not -h: values checked, problems through tool_bad. */
+void gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
+    char **argv);
+/* The checks between options and on the operands argv[optind..argc-1]. */
+void gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv);
+
+#endif

@@ -1,0 +1,38 @@
+/* gfmd_row.c - gfmd-solve's result row (see gfmd_row.h). */
+#include "gfmd_row.h"
+
+int
+gfmd_result_row(rc_row *row, const struct gfmd_row *in)
+{
+	const rc_contact_stats *st = in->stats;
+
+	rc_row_clear(row);
+	if (rc_row_num(row, "p_star", in->p_star) ||
+	    rc_row_num(row, "p", in->p) ||
+	    rc_row_num(row, "a_r", st->a_r) ||
+	    rc_row_int(row, "n_c", (long long)st->n_c) ||
+	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
+	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||
+	    rc_row_num(row, "a_yastrebov", st->a_yastrebov) ||
+	    rc_row_num(row, "gbar", in->gbar) ||
+	    rc_row_num(row, "gbar_c", st->gbar_c) ||
+	    rc_row_num(row, "gbar_c_prime", st->gbar_c_prime) ||
+	    rc_row_num(row, "kappa", st->kappa) ||
+	    rc_row_num(row, "kappa_c", st->kappa_c) ||
+	    rc_row_num(row, "mean_gap", in->mean_gap) ||
+	    rc_row_num(row, "elastic_energy", in->elastic_energy) ||
+	    rc_row_int(row, "n_patches", (long long)st->n_patches) ||
+	    rc_row_num(row, "patch_size_char", st->patch_size_char) ||
+	    rc_row_int(row, "iterations", in->iterations) ||
+	    rc_row_num(row, "residual", in->residual) ||
+	    rc_row_num(row, "seconds", in->seconds) ||
+	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
+	    rc_row_str(row, "method", in->method) ||
+	    rc_row_int(row, "nx", (long long)in->nx) ||
+	    rc_row_int(row, "ny", (long long)in->ny) ||
+	    rc_row_num(row, "lx", in->indenter->lx) ||
+	    rc_row_num(row, "ly", in->indenter->ly) ||
+	    rc_row_meta(row, in->indenter))
+		return -1;
+	return 0;
+}

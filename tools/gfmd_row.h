@@ -1,0 +1,25 @@
+/* gfmd_row.h - the result row of one gfmd-solve pressure, the same columns
+ * in the serial tool and its MPI build (gfmd-solve(1), RESULT ROWS). */
+#ifndef RC_GFMD_ROW_H
+#define RC_GFMD_ROW_H
+
+#include "contact.h"
+#include "grid.h"
+#include "solver.h"
+#include "table.h"
+
+struct gfmd_row {
+	double p_star, p, gbar;
+	const rc_contact_stats *stats;
+	double mean_gap, elastic_energy;
+	long iterations;
+	double residual, seconds, plan_seconds;
+	const char *method;
+	const rc_grid *indenter;	/* lx, ly and metadata */
+	size_t nx, ny;			/* the whole grid */
+};
+
+/* Fill row (cleared first); 0, or -1 when out of memory. */
+int gfmd_result_row(rc_row *row, const struct gfmd_row *in);
+
+#endif
