@@ -40,17 +40,20 @@ k_surf = n$(call k_n,$(call k_ls,$(2),$(3)),$(PK),$(4))_H$(1)_lr$(call k_et,$(2)
 k_sols = $(foreach p,$(PRESSURES),$(foreach s,$(SEEDS),$(foreach e,$(EPS_C), \
 	$(OUT)/sol/$(call k_surf,$(1),$(2),$(p),$(e),$(s),$(3))__p$(p).tsv)))
 
-# one contact-stats run per curve H+schedule+w (warps may be negative)
+# one contact-stats run per curve H+schedule+w (warps may be negative).
+# No pipes from a tool: sh has no pipefail, and a failure must stop make.
 KCURVES = $(foreach h,$(HS),$(foreach c,$(SCHEDS),$(foreach w,$(WARPS),H$(h)+$(c)+w$(w))))
 $(OUT)/kappa/%.tsv: $$(call k_sols,$$(subst H,,$$(word 1,$$(subst +, ,$$*))),$$(word 2,$$(subst +, ,$$*)),$$(subst w,,$$(word 3,$$(subst +, ,$$*))))
 	@mkdir -p $(@D)
-	$(CSTATS) $^ | awk -F'\t' -v curve=$* 'NR == 1 { print "curve\t" $$0; next } { print curve "\t" $$0 }' > $@
+	$(CSTATS) $^ -o $@.cs
+	awk -F'\t' -v curve=$* 'NR == 1 { print "curve\t" $$0; next } { print curve "\t" $$0 }' $@.cs > $@
+	rm -f $@.cs
 
 $(OUT)/kappa.tsv: $(foreach k,$(KCURVES),$(OUT)/kappa/$(k).tsv)
-	$(call tsvcat,$^) | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$$i] = i; \
+	awk -F'\t' 'FNR == 1 { delete c; for (i = 1; i <= NF; i++) c[$$i] = i; if (NR > 1) next; \
 	    print "curve\tp_star\tkappa\tkappa_err\tkappa_c\tkappa_c_err\ta_r\ta_r_err\tn_seeds\tlambda_r\tlambda_s"; next } \
 	    { print $$c["curve"] "\t" $$c["p_star"] "\t" $$c["kappa"] "\t" $$c["kappa_err"] "\t" $$c["kappa_c"] "\t" \
-	      $$c["kappa_c_err"] "\t" $$c["a_r"] "\t" $$c["a_r_err"] "\t" $$c["n_seeds"] "\t" $$c["lambda_r"] "\t" $$c["lambda_s"] }' > $@
+	      $$c["kappa_c_err"] "\t" $$c["a_r"] "\t" $$c["a_r_err"] "\t" $$c["n_seeds"] "\t" $$c["lambda_r"] "\t" $$c["lambda_s"] }' $^ > $@
 
 $(OUT)/kappa.png: $(OUT)/kappa.tsv $(COMMON_DIR)kappa.gp
 	$(GNUPLOT) -e "data='$<'; out='$@'; curves='$(KCURVES)'; title='$(KTITLE)'" $(COMMON_DIR)kappa.gp

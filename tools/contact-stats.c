@@ -271,6 +271,12 @@ parse(int argc, char **argv, struct opts *o)
 		tool_bad(&t, "--png -: standard output is a terminal");
 	if (has_control(t.png) || has_control(o->gnuplot))
 		tool_bad(&t, "--png, --gnuplot: a control character in the file name");
+	/* The result rows replace no input rows (they are another table). */
+	for (int i = optind; i < argc; i++) {
+		tool_not_input(&t, "-o", t.out, argv[i]);
+		tool_not_input(&t, "--gnuplot", o->gnuplot, argv[i]);
+		tool_not_input(&t, "--png", t.png, argv[i]);
+	}
 }
 
 static void

@@ -160,4 +160,18 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	}
 	if (t->png != NULL && rc_is_stdio(t->png))
 		tool_bad(t, "--png -: give a file name");
+	/* No output replaces the indenter; none but the fields (which may
+	 * update a warm start file) replaces --init. */
+	if (optind < argc) {
+		const char *in = argv[optind];
+
+		tool_not_input(t, "-o", t->out, in);
+		tool_not_input(t, "--png", t->png, in);
+		tool_not_input(t, "--checkpoint", o->ck_path, in);
+		for (int k = 0; k < GFMD_NFIELDS; k++)
+			tool_not_input(t, gfmd_field_option[k], o->field[k], in);
+	}
+	tool_not_input(t, "-o", t->out, o->init);
+	tool_not_input(t, "--png", t->png, o->init);
+	tool_not_input(t, "--checkpoint", o->ck_path, o->init);
 }

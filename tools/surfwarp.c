@@ -153,6 +153,11 @@ main(int argc, char **argv)
 	tool_check_grid_path(&t, "-o", t.out);
 	tool_output(&t, "-o", t.out ? t.out : "-", 0);
 	tool_output(&t, "--png", t.png, 1);
+	/* -o may be the input (written atomically after reading it), not the
+	 * mask; the preview is never either. */
+	tool_not_input(&t, "-o", t.out, carve_mask);
+	tool_not_input(&t, "--png", t.png, in);
+	tool_not_input(&t, "--png", t.png, carve_mask);
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);
