@@ -14,4 +14,32 @@ awk '/^## A pipeline/ { on = 1; next } on && /^## / { exit } on && /^    / { sub
     "$RC_TOP/README.md" > pipeline.sh
 check "README pipeline has 5 lines" [ "$(wc -l < pipeline.sh)" -eq 5 ]
 check "README pipeline runs" sh -e pipeline.sh > pipeline.out 2>&1
+
+# Every option --help lists is in the manual page, and every option the
+# page describes (.It Fl) is in --help: the two are written together.
+for t in surfgen surfwarp surfstat gfmd-solve contact-stats; do
+	man="$RC_TOP/man/man1/$t.1"
+	"$t" --help 2>&1 | grep -o -- '--[a-z][a-z0-9-]*' | sort -u > help.opts
+	grep -o 'Fl -[a-z][a-z0-9-]*' "$man" | sed 's/^Fl -/--/' | sort -u > man.opts
+	grep '^\.It Fl -' "$man" | grep -o 'Fl -[a-z][a-z0-9-]*' | sed 's/^Fl -/--/' | sort -u > man.items
+	missing=$(comm -23 help.opts man.opts | tr '\n' ' ')
+	check "$t: every --help option is in $t(1) (missing: ${missing:-none})" [ -z "$missing" ]
+	extra=$(comm -13 help.opts man.items | tr '\n' ' ')
+	check "$t: every option $t(1) describes is in --help (extra: ${extra:-none})" [ -z "$extra" ]
+done
+# Every column of the result tables is in the tool's page, except the
+# surface's metadata columns (meta.* in its header), which are carried.
+surfgen -n 32 --type harmonic -o h32.surf
+surfgen -n 64 --type harmonic -o h64.surf
+sed -n 's/^meta\.\([a-z_]*\) =.*/\1/p' h32.surf > meta.cols
+gfmd-solve -q -p 0.1,0.2 -o r32.tsv h32.surf
+gfmd-solve -q -p 0.1,0.2 -o r64.tsv h64.surf
+contact-stats -o cs.tsv r32.tsv r64.tsv
+surfstat -o st.tsv h32.surf
+for pair in gfmd-solve:r32.tsv surfstat:st.tsv contact-stats:cs.tsv; do
+	t=${pair%%:*}; f=${pair#*:}
+	missing=$(head -n 1 "$f" | tr '\t' '\n' | grep -v -x -F -f meta.cols |
+	    while read -r c; do grep -q -w -- "$c" "$RC_TOP/man/man1/$t.1" || printf '%s ' "$c"; done)
+	check "$t: every output column is in $t(1) (missing: ${missing:-none})" [ -z "$missing" ]
+done
 summary
