@@ -100,10 +100,12 @@ nfiles=$(ls "$B" | wc -l)
 
 # --- the check -------------------------------------------------------------
 SENTINEL='an existing output that must survive'
-# fresh_work: the work directory holds only sentinel outputs.
+# fresh_work: the work directory holds only sentinel outputs.  The helpers
+# loop over "out", never "f": sh has no local variables, and the callers'
+# f is the bad file the next reader must get.
 fresh_work() {
 	rm -rf "$W"; mkdir "$W"
-	for f in out.surf out.tsv gap.surf; do printf '%s\n' "$SENTINEL" >"$W/$f"; done
+	for out in out.surf out.tsv gap.surf; do printf '%s\n' "$SENTINEL" >"$W/$out"; done
 }
 # expect_fail1 DESC NAME CMD...: run CMD in $W; exit 1, one stderr line
 # naming NAME with a reason, outputs intact, no new files.
@@ -118,8 +120,8 @@ expect_fail1() {
 	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines (want 1);"
 	grep -qF -- "$name:" "$T_TMP/stderr" || why="$why message does not name '$name';"
 	grep -q ': [^:]*[a-zA-Z][^:]*' "$T_TMP/stderr" || why="$why no reason;"
-	for f in out.surf out.tsv gap.surf; do
-		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	for out in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$out" 2>/dev/null)" = "$SENTINEL" ] || why="$why $out modified;"
 	done
 	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
 	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
@@ -135,8 +137,8 @@ expect_fail1_pipe() {
 	[ "$st" = 1 ] || why="$why exit $st (want 1);"
 	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines;"
 	grep -qF -- "standard input: " "$T_TMP/stderr" || why="$why message does not name standard input;"
-	for f in out.surf out.tsv gap.surf; do
-		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	for out in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$out" 2>/dev/null)" = "$SENTINEL" ] || why="$why $out modified;"
 	done
 	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
 	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
@@ -207,8 +209,8 @@ expect_oom() {
 	[ "$st" = 1 ] || why="$why exit $st (want 1);"
 	[ "$(wc -l <"$T_TMP/stderr")" = 1 ] || why="$why $(wc -l <"$T_TMP/stderr") stderr lines (want 1);"
 	grep -q 'out of memory (asked for [0-9][0-9]* bytes' "$T_TMP/stderr" || why="$why no 'out of memory (asked for N bytes';"
-	for f in out.surf out.tsv gap.surf; do
-		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	for out in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$out" 2>/dev/null)" = "$SENTINEL" ] || why="$why $out modified;"
 	done
 	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
 	if [ -z "$why" ]; then pass "$d"; else fail "$d:$why [$(head -c 300 "$T_TMP/stderr")]"; fi
@@ -253,8 +255,8 @@ expect_usage() {
 	lines=$(grep -cv 'usage problems\{0,1\}; see' "$T_TMP/stderr")
 	[ "$lines" = "$want" ] || why="$why $lines problem lines (want $want);"
 	grep -q ": $want usage problems\{0,1\}; see" "$T_TMP/stderr" || why="$why no summary counting $want;"
-	for f in out.surf out.tsv gap.surf; do
-		[ "$(cat "$W/$f" 2>/dev/null)" = "$SENTINEL" ] || why="$why $f modified;"
+	for out in out.surf out.tsv gap.surf; do
+		[ "$(cat "$W/$out" 2>/dev/null)" = "$SENTINEL" ] || why="$why $out modified;"
 	done
 	[ "$(ls -A "$W" | wc -l)" = 3 ] || why="$why stray files: $(ls -A "$W" | tr '\n' ' ');"
 	[ -s "$T_TMP/stdout" ] && why="$why wrote to stdout;"
