@@ -4,19 +4,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "fft.h"
+#include "clock.h"
 #include "synth.h"
-
-static double
-now(void)
-{
-	struct timespec ts;
-
-	clock_gettime(CLOCK_MONOTONIC, &ts);
-	return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 /* Best of `reps` runs: the least disturbed by the rest of the machine. */
 static double
@@ -31,9 +22,9 @@ time_c2r(size_t n, int reps)
 	for (int r = 0; r < reps; r++) {
 		for (size_t k = 0; k < nxc * n; k++)
 			spec[k] = (double)(k % 7) - 3.0 * I;
-		double t0 = now();
+		double t0 = rc_clock();
 		fftw_execute(p);
-		double t = now() - t0;
+		double t = rc_clock() - t0;
 		if (t < best)
 			best = t;
 	}
@@ -56,9 +47,9 @@ time_synth(size_t n, int reps)
 	p.lambda_r = 0.5;
 	for (int r = 0; r < reps; r++) {
 		p.seed = (uint64_t)r + 1;
-		double t0 = now();
+		double t0 = rc_clock();
 		rc_grid *g = rc_synth(&p, &err);
-		double t = now() - t0;
+		double t = rc_clock() - t0;
 		if (g == NULL) {
 			fprintf(stderr, "bench_surfgen: %s\n", err.msg);
 			exit(1);

@@ -6,10 +6,10 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "atomic.h"
+#include "clock.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -142,22 +142,12 @@ rc_fft_wisdom_export(const char *path, rc_err *err)
 #define FFTW_HEADROOM(nx, ny) (((size_t)16 << 20) + 64 * ((nx) + (ny)) * \
 	sizeof(fftw_complex))
 
-static double
-seconds_since(const struct timespec *t0)
-{
-	struct timespec t1;
-
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	return (double)(t1.tv_sec - t0->tv_sec) + 1e-9 * (double)(t1.tv_nsec -
-	    t0->tv_nsec);
-}
-
 fftw_plan
 rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
     enum rc_fft_effort effort, double *plan_seconds, enum rc_fft_effort *used,
     rc_err *err)
 {
-	struct timespec t0;
+	double t0;
 	fftw_plan p;
 	void *probe;
 
@@ -172,7 +162,7 @@ rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 		return NULL;
 	}
 	free(probe);
-	clock_gettime(CLOCK_MONOTONIC, &t0);
+	t0 = rc_clock();
 	p = fftw_plan_dft_c2r_2d((int)ny, (int)nx, buf, (double *)buf,
 	    effort_flags(effort));
 	if (p == NULL && effort == RC_FFT_WISDOM) {
@@ -182,7 +172,7 @@ rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 	} else if (effort == RC_FFT_WISDOM)
 		effort = RC_FFT_MEASURE;
 	if (plan_seconds != NULL)
-		*plan_seconds = seconds_since(&t0);
+		*plan_seconds = rc_clock() - t0;
 	if (used != NULL)
 		*used = effort;
 	if (p == NULL)
@@ -195,7 +185,7 @@ int
 rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err)
 {
-	struct timespec t0;
+	double t0;
 	unsigned flags = effort_flags(effort);
 	void *probe;
 
@@ -222,7 +212,7 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 		    sizeof(double), FFTW_HEADROOM(nx, ny));
 	}
 	free(probe);
-	clock_gettime(CLOCK_MONOTONIC, &t0);
+	t0 = rc_clock();
 	f->forward = fftw_plan_dft_r2c_2d((int)ny, (int)nx, f->real, f->spec, flags);
 	f->backward = fftw_plan_dft_c2r_2d((int)ny, (int)nx, f->spec, f->real, flags);
 	if (effort == RC_FFT_WISDOM) {
@@ -241,7 +231,7 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 		}
 	}
 	f->effort = effort;
-	f->plan_seconds = seconds_since(&t0);
+	f->plan_seconds = rc_clock() - t0;
 	if (f->forward == NULL || f->backward == NULL) {
 		rc_fft_free(f);
 		return rc_seterr(err, "FFTW could not plan a %zux%zu transform", nx, ny);

@@ -32,7 +32,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
+
+#include "clock.h"
 
 #ifdef RC_MPI
 #include "mpi/decomp.h"
@@ -69,15 +70,6 @@ rc_method_parse(const char *name)
 	if (strcmp(name, "cg") == 0)
 		return RC_METHOD_CG;
 	return -1;
-}
-
-double
-rc__seconds(void)
-{
-	struct timespec t;
-
-	clock_gettime(CLOCK_MONOTONIC, &t);
-	return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
 rc_solver *
@@ -169,7 +161,7 @@ rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err)
 int
 rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
-	double t0 = rc__seconds();
+	double t0 = rc_clock();
 	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
 	int r;
 
@@ -183,7 +175,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	if (r < 0)
 		return -1;
 	s->last_pressure = p;
-	res->seconds = rc__seconds() - t0;
+	res->seconds = rc_clock() - t0;
 	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
 	return r;

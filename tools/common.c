@@ -7,7 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "atomic.h"
@@ -370,13 +369,4 @@ tool_not_input(struct tool *t, const char *opt, const char *out, const char *in)
 	    so.st_ino == si.st_ino)
 		tool_bad(t, "%s %s: that is the input %s; refusing to replace it "
 		    "with output of another kind", opt, out, in);
-}
-
-double
-tool_clock(void)
-{
-	struct timespec now;
-
-	clock_gettime(CLOCK_MONOTONIC, &now);
-	return (double)now.tv_sec + 1e-9 * (double)now.tv_nsec;
 }

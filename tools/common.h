@@ -116,7 +116,6 @@ int tool_exit(const struct tool *t, int status);
  * the surface it describes).  Either may be NULL or "-". */
 void tool_not_input(struct tool *t, const char *opt, const char *out,
     const char *in);
-/* Monotonic wall clock in seconds, for the tools' timing columns. */
-double tool_clock(void);
+
 
 #endif

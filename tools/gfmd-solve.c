@@ -12,6 +12,7 @@
 
 #include "atomic.h"
 #include "checkpoint.h"
+#include "clock.h"
 #include "common.h"
 #include "gfmd_opts.h"
 #include "gfmd_row.h"
@@ -316,11 +317,11 @@ main(int argc, char **argv)
 	}
 	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
 	o.so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
-	plan_seconds = tool_clock();
+	plan_seconds = rc_clock();
 	if ((solver = rc_solver_new(h, &o.so, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
 	tool_fft_finish(&t);
-	plan_seconds = tool_clock() - plan_seconds;
+	plan_seconds = rc_clock() - plan_seconds;
 	if (o.init != NULL) {
 		rc_grid *u = tool_read_grid(&t, o.init);
 		if (u->nx != h->nx || u->ny != h->ny)

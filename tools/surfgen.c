@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "clock.h"
 #include "fft.h"
 #include "png.h"
 #include "surfgen_opts.h"
@@ -86,10 +87,10 @@ main(int argc, char **argv)
 
 	tool_fft_setup(&t);
 	effort = tool_fft_effort(&t, p->nx, p->ny, 1);
-	seconds = tool_clock();
+	seconds = rc_clock();
 	if ((g = rc_synth_planned(p, effort, &plan_seconds, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
-	seconds = tool_clock() - seconds;
+	seconds = rc_clock() - seconds;
 	/* Planning time is worth a line only when it was asked for. */
 	if (!t.quiet && (effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT))
 		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s; synthesis: %.3g s",

@@ -7,9 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "atomic.h"
+#include "clock.h"
 #include "common.h"
 #include "fft.h"
 #include "png.h"
@@ -128,11 +128,11 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	double gbar, seconds;
 	char name[8];
 
-	seconds = tool_clock();
+	seconds = rc_clock();
 	if (rc_rms_gradient(g, fft, &gbar, &err) != 0 ||
 	    rc_stats_compute_fft(g, mask, m, fft, &s, &err) != 0)
 		tool_fail(t, "%s", err.msg);
-	seconds = tool_clock() - seconds;
+	seconds = rc_clock() - seconds;
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||
