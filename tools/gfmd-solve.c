@@ -14,15 +14,14 @@
 #include "checkpoint.h"
 #include "clock.h"
 #include "common.h"
-#include "gfmd_opts.h"
-#include "gfmd_row.h"
 #include "contact.h"
 #include "fft.h"
+#include "gfmd_opts.h"
+#include "gfmd_row.h"
 #include "png.h"
 #include "solver.h"
 #include "spectral.h"
 #include "table.h"
-
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;

@@ -13,15 +13,14 @@
 
 #include "atomic.h"
 #include "common.h"
+#include "contact.h"
 #include "gfmd_opts.h"
 #include "gfmd_row.h"
-#include "contact.h"
 #include "mpi/decomp.h"
 #include "mpi/dsolver.h"
 #include "mpitool.h"
 #include "solver.h"
 #include "table.h"
-
 
 static void
 usage(void)
