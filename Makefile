@@ -86,7 +86,8 @@ $(O)/bench/peakrss: bench/peakrss.c
 	@mkdir -p $(dir $@)
 	$(CC) $(STD) $(WARN) $(CFLAGS) -o $@ bench/peakrss.c
 
-# accuracy of a_r against wall time (bench/accuracy/README.md)
+# accuracy of a_r against wall time (bench/accuracy/README.md; FINE_REF=1
+# for the 8192^2 reference)
 accuracy: $(TOOLS)
 	$(MAKE) -C bench/accuracy BIN=$(abspath $(BIN))
 
