@@ -132,7 +132,7 @@ done
 # surface (p* is relative to its own gbar).  The paper's meaning:
 # w > 0 blunts the peaks, so at fixed p* the contact is larger than at
 # w = 0, and w < 0 makes it smaller.
-# Taught: a_r(p* = 0.05) = 0.046, 0.058, (0.10 at w = 0), 0.42, 0.83;
+# Taught: a_r(p* = 0.05) = 0.046, 0.058, (0.125 at w = 0), 0.42, 0.83;
 # at 128^2 (make check-hard) CG two-cycled forever at w = -20 (thousands
 # of points re-entering and clipped each step) and at w = 20 its cheap
 # residual bound never fell below tol though the residual had; both
@@ -147,12 +147,18 @@ for w in -20 -8 8 20; do
 done
 gfmd-solve -j 1 -q -p 0.05 "$T/w0.surf" > "$T/w=0.fire.tsv"
 for w in -20 -8 0 8 20; do echo "$w $(col "$T/w=$w.fire.tsv" a_r)"; done > "$T/warp_ar"
-# Negative w shrinks the contact, positive w grows it, more so at w = 20;
-# between w = -8 and -20 there is no order: at 128^2 a_r(-20) = 0.075 >
-# a_r(-8) = 0.056 (the surface becomes a few needles whose slopes set
-# gbar, so p* = 0.05 means another load).
-check "warping: a_r(-20), a_r(-8) < a_r(0) < a_r(8) < a_r(20) ($(tr '\n' ' ' < "$T/warp_ar"))" \
-    awk '{ a[$1] = $2 } END { exit !(a[-20] < a[0] && a[-8] < a[0] && a[0] < a[8] && a[8] < a[20]) }' "$T/warp_ar"
+# Negative w shrinks the contact, positive w grows it, more so at w = 20.
+# w = -20 takes no part in the order: it leaves a flat floor (t^21 of the
+# lower part of the range is below 1e-4 of it) with a few needles whose
+# slopes set gbar, so whether p* = 0.05 presses the body down onto the
+# floor depends on the realisation and the grid.  Measured for this
+# seed: a_r(-20) = 0.046, 0.075, 0.229, 0.334 at 64^2 ... 512^2 against
+# a_r(0) = 0.125, 0.118, 0.115, 0.110 (at 256^2, make check-hard, the
+# old assertion a_r(-20) < a_r(0) failed), while a_r(-8) = 0.058 ...
+# 0.054 and a_r(-2) = 0.096 ... 0.087 stay below a_r(0) at every size.
+# For w = -20 FIRE and CG must still agree (above).
+check "warping: a_r(-8) < a_r(0) < a_r(8) < a_r(20) ($(tr '\n' ' ' < "$T/warp_ar"))" \
+    awk '{ a[$1] = $2 } END { exit !(a[-8] < a[0] && a[0] < a[8] && a[8] < a[20]) }' "$T/warp_ar"
 
 # --- Tiny pressure p* = 1e-4 on a random surface: the highest asperity
 # alone, a handful of points.  Taught: kappa stays finite (3.05 at
