@@ -10,6 +10,7 @@
 #include "contact.h"
 #include "kappa.h"
 #include "mpi/decomp.h"
+#include "mpi/dpatches.h"
 #include "mpi/dspectral.h"
 #include "solver_impl.h"
 
@@ -199,68 +200,19 @@ deriv(rc_solver *s, const fftw_complex *spec0, int d, double *out)
 	rc_elastic_c2r(e, e->fft.spec, out);
 }
 
-/* Patches: rank 0 gathers the contact mask (one byte per point of the whole
- * grid, rows as MPI type) and runs lib/contact.c's run union-find; the
- * result is broadcast. */
+/* Patches from every rank's rows (lib/mpi/dpatches.c: the mask is never
+ * gathered). */
 static int
-patches(rc_solver *s, size_t j0, rc_contact_stats *st, rc_err *err)
+patches(rc_solver *s, rc_contact_stats *st, rc_err *err)
 {
-	int nranks = rc_mpi_size(), rank = rc_mpi_rank(), *counts = NULL;
-	int *displs = NULL, r, st0 = 0;
-	unsigned long long mine[2] = { j0, s->ny }, *all = NULL;
-	unsigned char *mask = NULL;
-	size_t ny = s->el.fft.ny, nx = s->nx;
-	double out[2] = { 0, NAN };
-	MPI_Datatype row;
+	double sum_sq, cell = s->lx / (double)s->nx *
+	    (s->ly / (double)s->el.fft.ny);
 
-	all = malloc(2 * (size_t)nranks * sizeof(*all));
-	counts = malloc((size_t)nranks * sizeof(int));
-	displs = malloc((size_t)nranks * sizeof(int));
-	if (rank == 0 && (mask = malloc(nx * ny)) == NULL)
-		st0 = rc_seterr(err, "out of memory (asked for %zu bytes of contact "
-		    "mask on rank 0 for n_patches)", nx * ny);
-	if (all == NULL || counts == NULL || displs == NULL)
-		st0 = rc_seterr(err, "out of memory");
-	MPI_Allreduce(MPI_IN_PLACE, &st0, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-	if (st0 != 0) {
-		if (err->msg[0] == '\0')
-			rc_seterr(err, "out of memory for the patch statistics");
-		goto out;
-	}
-	MPI_Allgather(mine, 2, MPI_UNSIGNED_LONG_LONG, all, 2,
-	    MPI_UNSIGNED_LONG_LONG, MPI_COMM_WORLD);
-	for (r = 0; r < nranks; r++) {
-		displs[r] = (int)all[2 * r];
-		counts[r] = (int)all[2 * r + 1];
-	}
-	MPI_Type_contiguous((int)nx, MPI_UNSIGNED_CHAR, &row);
-	MPI_Type_commit(&row);
-	MPI_Gatherv(s->contact, (int)s->ny, row, mask, counts, displs, row, 0,
-	    MPI_COMM_WORLD);
-	MPI_Type_free(&row);
-	if (rank == 0) {
-		size_t n_patches;
-		double sum_sq, cell = s->lx / (double)nx * (s->ly / (double)ny);
-
-		if (rc_contact_patches(mask, nx, ny, &n_patches, &sum_sq, err) != 0)
-			st0 = -1;
-		else {
-			out[0] = (double)n_patches;
-			out[1] = st->n_c ? sum_sq / (double)st->n_c * cell : NAN;
-		}
-	}
-	MPI_Bcast(&st0, 1, MPI_INT, 0, MPI_COMM_WORLD);
-	if (st0 != 0)
-		MPI_Bcast(err->msg, (int)sizeof(err->msg), MPI_CHAR, 0, MPI_COMM_WORLD);
-	MPI_Bcast(out, 2, MPI_DOUBLE, 0, MPI_COMM_WORLD);
-	st->n_patches = (size_t)out[0];
-	st->patch_size_char = out[1];
-out:
-	free(all);
-	free(counts);
-	free(displs);
-	free(mask);
-	return st0 != 0 ? -1 : 0;
+	if (rc_mpi_patches(s->contact, s->nx, s->ny, &st->n_patches, &sum_sq,
+	    err) != 0)
+		return -1;
+	st->patch_size_char = st->n_c ? sum_sq / (double)st->n_c * cell : NAN;
+	return 0;
 }
 
 int
@@ -295,7 +247,7 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
 	st->a_yastrebov = (sums[0] - alpha * sums[2]) / (double)e->n;
 	if (modulus > 0 && *gbar > 0)
 		st->kappa = rc_kappa(st->a_r, pressure / (modulus * *gbar));
-	if (patches(s, j0, st, err) != 0)
+	if (patches(s, st, err) != 0)
 		return -1;
 	if (st->n_c == 0)
 		return 0;

@@ -14,9 +14,9 @@ rc_solver *rc_mpi_solver_new(const double *height, size_t nx, size_t ny,
 
 /* Contact statistics of the current solution, over the whole grid: every
  * field of rc_contact_stats as rc_contact_analyse gives them with
- * RC_CONTACT_ALL and spectral gradients (the patch statistics gather the
- * contact mask, one byte per point, on rank 0); *gbar the spectral rms
- * gradient of the whole indenter.  Collective. */
+ * RC_CONTACT_ALL and spectral gradients (the patches from every rank's
+ * rows, lib/mpi/dpatches.c); *gbar the spectral rms gradient of the whole
+ * indenter.  Collective. */
 struct rc_contact_stats;
 int rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
     double *gbar, struct rc_contact_stats *st, rc_err *err);

@@ -143,6 +143,27 @@ check_rel "gfmd-solve 32x4 np=3 (a rank with no rows) n_c" \
     "$(col mpi.tsv n_c)" "$(col ser.tsv n_c)" 0
 check_rel "gfmd-solve 32x4 np=3 mean_gap" "$(col mpi.tsv mean_gap)" \
     "$(col ser.tsv mean_gap)" 1e-6
+check_rel "gfmd-solve 32x4 np=3 n_patches" "$(col mpi.tsv n_patches)" \
+    "$(col ser.tsv n_patches)" 0
+check_rel "gfmd-solve 32x4 np=3 patch_size_char" \
+    "$(col mpi.tsv patch_size_char)" "$(col ser.tsv patch_size_char)" 1e-12
+
+# Patches across rank boundaries and across y = 0, which no rank holds
+# whole (lib/mpi/dpatches.c joins the ranks' edge rows).  Egg box
+# h = cos(kx) cos(ky) with 4 periods on 64^2: at small load one patch
+# around each of the 2 * 4^2 = 32 maxima, centred on rows 0, 8, ..., 56
+# (row 0's patch wraps in y; on 2 and 3 ranks others straddle the slab
+# edges); at p* = 0.5 the contact is one network around 32 holes, whose
+# patch_size_char is then the contact area a_r L^2 itself.
+surfgen -n 64 --type eggbox --wavelength 0.25 -o egg.surf
+for np in 1 2 3; do
+	$MPIRUN -np $np "$MPI_BIN/gfmd-solve" -p 0.02,0.1,0.5 egg.surf >mpi.tsv
+	check_rel "egg box np=$np p*=0.02: 32 patches" "$(col mpi.tsv n_patches 1)" 32 0
+	check_rel "egg box np=$np p*=0.1: 32 patches" "$(col mpi.tsv n_patches 2)" 32 0
+	check_rel "egg box np=$np p*=0.5: one patch" "$(col mpi.tsv n_patches 3)" 1 0
+	check_rel "egg box np=$np p*=0.5: patch_size_char = a_r L^2" \
+	    "$(col mpi.tsv patch_size_char 3)" "$(col mpi.tsv a_r 3)" 1e-15
+done
 
 # What the MPI build does not have is refused with a message, exit 2; a
 # missing input fails on every rank alike, exit 1, without hanging.
