@@ -71,6 +71,18 @@ rc_uf_free(rc_uf *u)
 }
 
 void
+rc_uf_components(const rc_uf *u, size_t *count, double *sum_sq)
+{
+	*count = 0;
+	*sum_sq = 0;
+	for (size_t k = 0; k < u->n; k++)
+		if (u->parent[k] == k) {
+			(*count)++;
+			*sum_sq += (double)u->size[k] * (double)u->size[k];
+		}
+}
+
+void
 rc_runs_join(rc_uf *u, const rc_run *a, size_t na, const rc_run *b,
     size_t nb)
 {
@@ -154,14 +166,7 @@ rc_contact_patches(const unsigned char *contact, size_t nx, size_t ny,
 		goto out;
 	/* Across the y boundary (a self-join when ny = 1, which is harmless). */
 	rc_runs_join(&u, ends + maxruns, nlast, ends, nfirst);
-	*n_patches = 0;
-	*sum_sq = 0;
-	for (size_t k = 0; k < u.n; k++) {
-		if (u.parent[k] != k)
-			continue;
-		(*n_patches)++;
-		*sum_sq += (double)u.size[k] * (double)u.size[k];
-	}
+	rc_uf_components(&u, n_patches, sum_sq);
 	rv = 0;
 out:
 	rc_uf_free(&u);

@@ -27,6 +27,8 @@ int rc_uf_add(rc_uf *u, size_t size, size_t *label, rc_err *err);
 size_t rc_uf_find(rc_uf *u, size_t a);
 void rc_uf_union(rc_uf *u, size_t a, size_t b);
 void rc_uf_free(rc_uf *u);
+/* The number of components and the sum of their squared sizes. */
+void rc_uf_components(const rc_uf *u, size_t *count, double *sum_sq);
 
 /* Join the runs of two vertically adjacent rows that share a column
  * (both lists sorted by start). */

@@ -151,13 +151,7 @@ join_edges(const unsigned long long *all, const int *displs, int nranks,
 		nb = decode_runs(all + displs[first], 0, offset[first], b);
 		rc_runs_join(&u, a, na, b, nb);
 	}
-	*n_joined = 0;
-	*sq_joined = 0;
-	for (size_t k = 0; k < u.n; k++)
-		if (u.parent[k] == k) {
-			(*n_joined)++;
-			*sq_joined += (double)u.size[k] * (double)u.size[k];
-		}
+	rc_uf_components(&u, n_joined, sq_joined);
 	rv = 0;
 out:
 	rc_uf_free(&u);
