@@ -1,11 +1,24 @@
-/* atomic.h - write a file so that it is either complete or untouched.
+/* atomic.h - write a file so that it is either complete or untouched,
+ * without ever replacing what is not a regular file.
  *
- * rc_atomic_open creates a temporary file next to the target (same
- * directory, so rename(2) is atomic); rc_atomic_commit flushes, fsyncs and
- * renames it over the target; rc_atomic_abort removes it.  An existing
- * target is never truncated before the new content is complete, and the
- * target may be the file being read.  A path of NULL or "-" writes to
- * standard output directly.
+ * What rc_atomic_open does depends on what the path names:
+ * - NULL or "-": standard output, written directly.
+ * - a new name, or an existing regular file: a temporary file is created
+ *   in the same directory (so rename(2) is atomic) and rc_atomic_commit
+ *   flushes, fsyncs and renames it over the target.  An existing target is
+ *   never truncated before the new content is complete, keeps its
+ *   permission bits, and may be the file being read.
+ * - a symbolic link: followed (also a dangling one) and the file it points
+ *   to is treated as above; the link itself stays a link.
+ * - /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N: the open
+ *   descriptor N is written directly (duplicated), so a shell's `>>` or a
+ *   pipe behaves as it would for any Unix tool.
+ * - a character or block device, FIFO or socket: opened and written
+ *   directly; write errors (ENOSPC on /dev/full) are reported by commit.
+ *   Such a target can never be "untouched" if the writer fails half-way,
+ *   and is never replaced or removed.
+ * rc_atomic_abort removes the temporary file; a direct target is left as
+ * it is.
  */
 #ifndef RC_ATOMIC_H
 #define RC_ATOMIC_H
@@ -15,8 +28,9 @@
 
 typedef struct rc_atomic {
 	FILE *fp;
-	char *path;		/* target, NULL for stdout */
-	char *tmp;		/* temporary file, NULL for stdout */
+	char *path;		/* final target (links resolved); NULL for stdout */
+	char *tmp;		/* temporary file; NULL when written directly */
+	int direct;		/* 1: fp writes the target itself (device, FIFO, fd) */
 } rc_atomic;
 
 int rc_atomic_open(rc_atomic *a, const char *path, rc_err *err);
@@ -24,5 +38,10 @@ int rc_atomic_commit(rc_atomic *a, rc_err *err);
 void rc_atomic_abort(rc_atomic *a);
 /* 1 if path means standard output. */
 int rc_is_stdio(const char *path);
+
+/* The temporary files of every rc_atomic still open in this process, for
+ * a signal handler that must remove them before the process dies
+ * (async-signal-safe: only unlink(2) on fixed buffers). */
+void rc_atomic_unlink_pending(void);
 
 #endif

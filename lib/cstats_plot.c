@@ -106,6 +106,50 @@ rc_cstats_gnuplot_write(const rc_cstats *res, const char *path, rc_err *err)
 	return rc;
 }
 
+/* An empty temporary file named like script with ".png" added. */
+static char *
+temp_beside_script(const char *script, rc_err *err)
+{
+	size_t len = strlen(script) + 16;
+	char *name = malloc(len);
+	int fd;
+
+	if (name == NULL) {
+		rc_seterr(err, "out of memory");
+		return NULL;
+	}
+	snprintf(name, len, "%s.png.XXXXXX", script);
+	if ((fd = mkstemp(name)) < 0) {
+		rc_seterr(err, "temporary file %s: %s", name, strerror(errno));
+		free(name);
+		return NULL;
+	}
+	close(fd);
+	return name;
+}
+
+/* Append the file at path to out; an errno value or 0. */
+static int
+copy_file(const char *path, FILE *out)
+{
+	char buf[65536];
+	FILE *in = fopen(path, "rb");
+	size_t n;
+	int rc = 0;
+
+	if (in == NULL)
+		return errno;
+	while ((n = fread(buf, 1, sizeof(buf), in)) > 0)
+		if (fwrite(buf, 1, n, out) != n) {
+			rc = errno ? errno : EIO;
+			break;
+		}
+	if (ferror(in) && rc == 0)
+		rc = EIO;
+	fclose(in);
+	return rc;
+}
+
 /* The script goes to a temporary file; gnuplot writes the PNG to the
  * temporary name rc_atomic made beside path (which rc_atomic_commit then
  * fsyncs and renames), or, for standard output, to its own standard
@@ -118,6 +162,7 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	char *argv[] = { "gnuplot", script, NULL };
 	rc_atomic out;
 	FILE *fp = NULL;
+	char *png_tmp = NULL;
 	pid_t pid;
 	int fd, st = 0, rc;
 
@@ -137,7 +182,16 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 		unlink(script);
 		return -1;
 	}
-	rc = rc_cstats_gnuplot(fp, res, script, out.tmp, err);
+	/* A device or FIFO target gets gnuplot's PNG through a temporary file,
+	 * copied in by us so that write errors are ours to report. */
+	if (out.direct && (png_tmp = temp_beside_script(script, err)) == NULL) {
+		fclose(fp);
+		unlink(script);
+		rc_atomic_abort(&out);
+		return -1;
+	}
+	rc = rc_cstats_gnuplot(fp, res, script, png_tmp ? png_tmp : out.tmp,
+	    err);
 	if (fclose(fp) != 0 && rc == 0)
 		rc = rc_seterr(err, "temporary script %s: %s", script,
 		    strerror(errno));
@@ -152,9 +206,19 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 		rc = errno;
 	unlink(script);
 	if (rc == ENOENT) {
+		if (png_tmp != NULL) {
+			unlink(png_tmp);
+			free(png_tmp);
+		}
 		rc_atomic_abort(&out);
 		return rc_seterr(err, "gnuplot not found; use --gnuplot FILE to get "
 		    "the script");
+	}
+	if (rc == 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0 && png_tmp != NULL)
+		rc = copy_file(png_tmp, out.fp);
+	if (png_tmp != NULL) {
+		unlink(png_tmp);
+		free(png_tmp);
 	}
 	if (rc != 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {
 		rc_atomic_abort(&out);
