@@ -69,6 +69,7 @@ rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 	g->lx = lx;
 	g->ly = ly;
 	g->kind = RC_KIND_HEIGHT;
+	g->periodic = 1;
 	g->z = fftw_alloc_real(n);
 	if (g->z == NULL) {
 		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
@@ -95,6 +96,7 @@ rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
 	g->lx = lx;
 	g->ly = ly;
 	g->kind = RC_KIND_HEIGHT;
+	g->periodic = 1;
 	g->z = z;
 	return g;
 }
@@ -113,6 +115,7 @@ rc_grid_free(rc_grid *g)
 		free(g->history[i]);
 	free(g->history);
 	fftw_free(g->z);
+	free(g->valid);
 	free(g);
 }
 
@@ -125,13 +128,21 @@ rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
 		return NULL;
 	c->kind = g->kind;
 	memcpy(c->unit, g->unit, sizeof(c->unit));
+	memcpy(c->z_unit, g->z_unit, sizeof(c->z_unit));
+	c->periodic = g->periodic;
 	if (rc_grid_meta_copy(c, g, err) != 0)
 		goto fail;
 	for (size_t i = 0; i < g->nhistory; i++)
 		if (rc_grid_history_add(c, g->history[i], err) != 0)
 			goto fail;
-	if (copy_values)
+	if (copy_values) {
 		memcpy(c->z, g->z, rc_grid_size(g) * sizeof(double));
+		if (g->valid != NULL) {
+			if ((c->valid = rc_calloc(rc_grid_size(g), 1, err)) == NULL)
+				goto fail;
+			memcpy(c->valid, g->valid, rc_grid_size(g));
+		}
+	}
 	return c;
 fail:
 	rc_grid_free(c);

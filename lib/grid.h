@@ -1,10 +1,23 @@
-/* grid.h - the periodic grid every tool reads and writes.
+/* grid.h - the grid every tool reads and writes.
  *
- * nx by ny points, periodic, pixel registered, spacing lx/nx by ly/ny,
- * row-major with x fastest: value (i, j) is z[j * nx + i].  Heights are in
- * the same length unit as lx and ly.  Besides the values a grid carries
- * what they are (kind), key/value metadata (the generation parameters,
+ * nx by ny points, pixel registered, spacing lx/nx by ly/ny, row-major with
+ * x fastest: value (i, j) is z[j * nx + i].  Besides the values a grid
+ * carries what they are (kind), their units, whether the grid is one period
+ * of an infinite surface (synthetic) or a finite patch (a measurement),
+ * which points are missing, key/value metadata (the generation parameters,
  * which every tool passes on) and the history of command lines that made it.
+ *
+ * Units: unit is the lateral unit of lx and ly, z_unit the unit of the
+ * values; "" means unknown, and an empty z_unit with a length unit means
+ * "the same as unit".  Computations that mix lateral and vertical lengths
+ * (gradients, gbar, p*, contact) need both in one length unit.
+ *
+ * Periodic: 1 (the default of rc_grid_new) for a grid that is one period
+ * of an infinite surface; 0 for a finite patch whose opposite edges are
+ * unrelated.  Measured data is read as 0.
+ *
+ * Missing points: valid is NULL when every point is valid; otherwise nx*ny
+ * flags, 1 valid and 0 missing, and z is NaN at every missing point.
  */
 #ifndef RC_GRID_H
 #define RC_GRID_H
@@ -36,7 +49,10 @@ typedef struct rc_grid {
 	size_t nx, ny;
 	double lx, ly;
 	enum rc_kind kind;
-	char unit[32];		/* length unit, "" if unknown */
+	char unit[32];		/* lateral unit of lx, ly; "" if unknown */
+	char z_unit[32];	/* unit of the values; "" = unknown or as unit */
+	int periodic;		/* 1 one period of an infinite surface, 0 a patch */
+	unsigned char *valid;	/* NULL, or nx*ny flags: 0 = missing (z NaN) */
 	rc_kv *meta;		/* generation parameters, in insertion order */
 	size_t nmeta;
 	char **history;		/* one command line per entry, oldest first */
@@ -52,7 +68,8 @@ void rc_grid_free(rc_grid *g);
  * the caller.  Saves a copy when a result is computed in place. */
 rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
     rc_err *err);
-/* Same shape, metadata and history; values copied if copy_values. */
+/* Same shape, units, periodic flag, metadata and history; values and the
+ * missing-point mask copied if copy_values. */
 rc_grid *rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err);
 /* Check nx, ny, nx*ny, lx, ly before allocating; message names the problem. */
 int rc_grid_check_shape(size_t nx, size_t ny, double lx, double ly, rc_err *err);
