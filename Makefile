@@ -8,7 +8,7 @@
 
 PREFIX  ?= /usr/local
 CC      ?= cc
-PKGS     = fftw3 gsl libpng
+PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf
 OPTFLAGS ?= -O2 -g
 CFLAGS  ?= $(OPTFLAGS)
 WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
@@ -111,7 +111,8 @@ uninstall:
 # Debian packages needed to build and test (what .ci/run installs).
 deps:
 	apt-get update && apt-get install -y build-essential pkg-config \
-	    libfftw3-dev libgsl-dev libpng-dev mandoc gnuplot-nox
+	    libfftw3-dev libgsl-dev libpng-dev libzip-dev libxml2-dev libnetcdf-dev \
+	    mandoc gnuplot-nox man-db gwyddion python3-numpy netcdf-bin
 
 clean:
 	rm -rf build bin
