@@ -561,6 +561,13 @@ rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err)
 	return g;
 }
 
+void
+rc_read_opts_init(rc_read_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->lx = o->ly = 1;
+}
+
 int
 rc_format_from_name(const char *path)
 {

@@ -21,11 +21,44 @@ enum rc_format {
 	RC_FMT_TXT
 };
 
+enum rc_periodic_opt {
+	RC_PERIODIC_AUTO = 0,	/* as the file says (format rule if it has no flag) */
+	RC_PERIODIC_YES,	/* --periodic */
+	RC_PERIODIC_NO		/* --no-periodic */
+};
+
 typedef struct rc_read_opts {
 	double lx, ly;		/* cell size for formats that carry none */
 	int have_l;		/* lx, ly given (-L): also overrides nothing else */
 	int allow_nonfinite;	/* accept NaN/Inf values (default: reject) */
+	/* Multi-channel files (.gwy, x3p, netCDF, vendor formats): which
+	 * channel is the grid.  channel 0 and channel_name NULL: the first
+	 * channel whose values are lengths.  A zeroed struct is the default. */
+	int channel;		/* 1-based, as listed by rc_grid_list_channels */
+	const char *channel_name;	/* or the channel of this title */
+	enum rc_periodic_opt periodic;	/* AUTO: the file's flag or the format's rule */
+	const char *unit;	/* lateral unit for formats that carry none */
+	const char *z_unit;	/* the user's --z-unit: values are in this unit,
+				 * also when the file says they are not lengths */
 } rc_read_opts;
+
+/* The defaults: zeroes, except L = 1 x 1. */
+void rc_read_opts_init(rc_read_opts *o);
+
+/* What one channel of a file is, for listing (surfstat --channels). */
+typedef struct rc_channel_info {
+	char title[128];
+	char z_unit[32];
+	char unit[32];
+	size_t nx, ny;
+	double lx, ly;
+	int has_mask;		/* some points missing */
+} rc_channel_info;
+
+/* Every channel of the file at path (a single-channel format gives one);
+ * *info is malloc'ed, *n its length. */
+int rc_grid_list_channels(const char *path, const rc_read_opts *o,
+    rc_channel_info **info, size_t *n, rc_err *err);
 
 /* Path "-" or NULL reads standard input.  o may be NULL (L = 1). */
 rc_grid *rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err);
