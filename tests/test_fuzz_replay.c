@@ -63,7 +63,7 @@ slurp(const char *path, size_t *len)
 static int
 accepted_read(const uint8_t *data, size_t size)
 {
-	rc_read_opts o = { 2, 3, 1, 0 };
+	rc_read_opts o = { .lx = 2, .ly = 3, .have_l = 1, .allow_nonfinite = 0 };
 	rc_grid *g;
 	rc_err err;
 	FILE *fp;

@@ -88,7 +88,7 @@ test_roundtrip(void)
 {
 	rc_err err;
 	rc_grid *g = sample(1), *tame = sample(0), *r;
-	rc_read_opts o = { 2.5, 1.75, 1, 0 };
+	rc_read_opts o = { .lx = 2.5, .ly = 1.75, .have_l = 1, .allow_nonfinite = 0 };
 
 	/* Native: everything exact, bit for bit. */
 	test_true(rc_grid_write(g, tmp("a.surf"), RC_FMT_SURF, &err) == 0, "write surf");
@@ -518,7 +518,7 @@ test_bad_surf(void)
 	n = make_surf(f, H2x2 "end_header\n", v, 4);
 	bad("Inf value", f, n, "infinite");
 	{
-		rc_read_opts o = { 1, 1, 0, 1 };
+		rc_read_opts o = { .lx = 1, .ly = 1, .have_l = 0, .allow_nonfinite = 1 };
 		rc_err err;
 		rc_grid *r;
 
@@ -631,7 +631,7 @@ test_bad_txt(void)
 {
 	rc_err err;
 	rc_grid *r;
-	rc_read_opts o = { 3, 4, 1, 0 };
+	rc_read_opts o = { .lx = 3, .ly = 4, .have_l = 1, .allow_nonfinite = 0 };
 	const char *ok = "# a numpy.savetxt file\n1 2 3\n4 5 6  # inline comment\n\n";
 
 	bads("txt only comments", "# nothing\n# here\n", "no values");

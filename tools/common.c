@@ -295,9 +295,14 @@ tool_double_list(struct tool *t, const char *opt, const char *arg, double **v,
 rc_grid *
 tool_read_grid(const struct tool *t, const char *path)
 {
-	rc_read_opts o = { t->lx, t->ly, t->have_l, 0 };
+	rc_read_opts o;
 	rc_err err;
 	rc_grid *g;
+
+	rc_read_opts_init(&o);
+	o.lx = t->lx;
+	o.ly = t->ly;
+	o.have_l = t->have_l;
 
 	if (rc_is_stdio(path) && isatty(STDIN_FILENO))
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");

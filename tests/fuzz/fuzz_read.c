@@ -57,7 +57,7 @@ int
 FUZZ_ENTRY(const uint8_t *data, size_t size)
 {
 	/* -L 2x3: formats without a cell size get it; others ignore it. */
-	rc_read_opts o = { 2, 3, 1, 0 };
+	rc_read_opts o = { .lx = 2, .ly = 3, .have_l = 1, .allow_nonfinite = 0 };
 	char path[] = "/tmp/fuzz_read.XXXXXX";
 	rc_grid *from_mem = NULL, *from_file = NULL;
 	int mem_tried = 0, file_tried = 0;
