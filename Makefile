@@ -7,6 +7,7 @@
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
+VERSION  = $(shell sed -n 's/^\#define RC_VERSION "\(.*\)"/\1/p' tools/common.h)
 CC      ?= cc
 PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf
 OPTFLAGS ?= -O2 -g
@@ -40,12 +41,14 @@ TEST_SRC = $(wildcard tests/test_*.c)
 TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
 TESTLIB_OBJ = $(O)/tests/testlib.o
 MAN1 = $(wildcard man/man1/*.1)
+MAN3 = $(wildcard man/man3/*.3)
 MAN5 = $(wildcard man/man5/*.5)
 MAN7 = $(wildcard man/man7/*.7)
 BENCH_SRC = $(wildcard bench/bench_*.c)
 BENCHES  = $(BENCH_SRC:bench/%.c=$(O)/bench/%)
 
-.PHONY: all check demo bench install uninstall clean deps accuracy
+.PHONY: all check demo bench install uninstall clean deps accuracy \
+	$(O)/roughcontact.pc
 # Keep objects: they are intermediate files of the pattern rules.
 .SECONDARY:
 all: $(TOOLS)
@@ -94,19 +97,53 @@ accuracy: $(TOOLS)
 demo: $(TOOLS)
 	@RC_BIN=$(BIN) sh data/demo.sh
 
-install: $(TOOLS)
+# The library is installed as libroughcontact.a with its public headers
+# (every lib/*.h but the *_internal.h and *_impl.h ones) under
+# include/roughcontact/, an umbrella header roughcontact.h that includes
+# them all, and roughcontact.pc for pkg-config.
+PUB_HDR = $(filter-out %_internal.h %_impl.h,$(wildcard lib/*.h))
+LIBDIR  ?= $(PREFIX)/lib
+INCDIR  ?= $(PREFIX)/include/roughcontact
+PCDIR   ?= $(LIBDIR)/pkgconfig
+$(O)/roughcontact.h: $(PUB_HDR)
+	@mkdir -p $(dir $@)
+	{ echo '/* roughcontact.h - every public header of the roughcontact library. */'; \
+	  echo '#ifndef ROUGHCONTACT_H'; echo '#define ROUGHCONTACT_H'; \
+	  for h in $(notdir $(PUB_HDR)); do echo "#include \"$$h\""; done; \
+	  echo '#endif'; } > $@
+$(O)/roughcontact.pc:
+	@mkdir -p $(dir $@)
+	{ echo 'prefix=$(PREFIX)'; echo 'libdir=$(LIBDIR)'; \
+	  echo 'includedir=$(PREFIX)/include'; echo; \
+	  echo 'Name: roughcontact'; \
+	  echo 'Description: contact mechanics of rough surfaces (GFMD, statistics, formats)'; \
+	  echo 'Version: $(VERSION)'; \
+	  echo 'Requires: $(PKGS)'; \
+	  echo 'Cflags: -I$${includedir} -fopenmp'; \
+	  echo 'Libs: -L$${libdir} -lroughcontact -lfftw3_omp -fopenmp -lm'; } > $@
+
+install: $(TOOLS) $(LIB) $(O)/roughcontact.h $(O)/roughcontact.pc
 	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/man/man1 \
-	    $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7
+	    $(DESTDIR)$(PREFIX)/share/man/man3 \
+	    $(DESTDIR)$(PREFIX)/share/man/man5 $(DESTDIR)$(PREFIX)/share/man/man7 \
+	    $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCDIR) $(DESTDIR)$(PCDIR)
 	install -m 755 $(TOOLS) $(DESTDIR)$(PREFIX)/bin
+	install -m 644 $(LIB) $(DESTDIR)$(LIBDIR)/libroughcontact.a
+	install -m 644 $(PUB_HDR) $(O)/roughcontact.h $(DESTDIR)$(INCDIR)
+	install -m 644 $(O)/roughcontact.pc $(DESTDIR)$(PCDIR)
 	install -m 644 $(MAN1) $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 644 $(MAN3) $(DESTDIR)$(PREFIX)/share/man/man3
 	install -m 644 $(MAN5) $(DESTDIR)$(PREFIX)/share/man/man5
 	install -m 644 $(MAN7) $(DESTDIR)$(PREFIX)/share/man/man7
 
 uninstall:
 	rm -f $(TOOLS:$(BIN)/%=$(DESTDIR)$(PREFIX)/bin/%) \
+	    $(DESTDIR)$(LIBDIR)/libroughcontact.a $(DESTDIR)$(PCDIR)/roughcontact.pc \
 	    $(MAN1:man/%=$(DESTDIR)$(PREFIX)/share/man/%) \
+	    $(MAN3:man/%=$(DESTDIR)$(PREFIX)/share/man/%) \
 	    $(MAN5:man/%=$(DESTDIR)$(PREFIX)/share/man/%) \
 	    $(MAN7:man/%=$(DESTDIR)$(PREFIX)/share/man/%)
+	rm -rf $(DESTDIR)$(INCDIR)
 
 # Debian packages needed to build and test (what .ci/run installs).
 deps:
