@@ -14,6 +14,20 @@ awk '/^## A pipeline/ { on = 1; next } on && /^## / { exit } on && /^    / { sub
     "$RC_TOP/README.md" > pipeline.sh
 check "README pipeline has 5 lines" [ "$(wc -l < pipeline.sh)" -eq 5 ]
 check "README pipeline runs" sh -e pipeline.sh > pipeline.out 2>&1
+# ...for a newcomer whose PATH has no tools: the README says, before the
+# pipeline, how to put them there; run its export line from a tree whose
+# bin/ holds the tools under test, with a PATH that has none of them.
+export_line=$(awk '/^## A pipeline/ { on = 1; next } on && /^    / { exit }
+    on' "$RC_TOP/README.md" | grep -o 'export PATH="[^`]*"')
+check "README says how the tools get on PATH before the pipeline" [ -n "$export_line" ]
+check "README mentions make install PREFIX= before the pipeline" \
+    sh -c "awk '/^## A pipeline/ { on = 1; next } on && /^    / { exit } on' '$RC_TOP/README.md' | grep -q 'make install PREFIX='"
+mkdir -p newcomer && ln -s "$RC_BIN" newcomer/bin
+check "README pipeline runs after its export line, PATH without the tools" \
+    sh -c "cd newcomer && PATH=/usr/bin:/bin && $export_line && sh -e ../pipeline.sh" \
+    > pipeline2.out 2>&1
+check "without it the pipeline fails (command not found)" \
+    sh -c "cd newcomer && ! PATH=/usr/bin:/bin sh -e ../pipeline.sh" > /dev/null 2>&1
 
 # Every option --help lists is in the manual page, and every option the
 # page describes (.It Fl) is in --help: the two are written together.
