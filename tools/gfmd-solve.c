@@ -585,8 +585,17 @@ main(int argc, char **argv)
 				tool_write_grid(&t, g, o.field[GFMD_CONTACT]);
 			if (t.png != NULL) {
 				rc_png_opts po;
+				char caption[96];
+				size_t n_c = 0;
+
+				for (size_t k = 0; k < np; k++)
+					n_c += mask[k] != 0;
+				/* The last pressure's, as in its row (a_r = n_c/n_tot). */
+				snprintf(caption, sizeof(caption), "p*=%.4g  a_r=%.4g",
+				    last_p_star, (double)n_c / (double)np);
 				rc_png_defaults(&po);
 				po.overlay = g;
+				po.caption = caption;
 				if (rc_png_write(h, t.png, &po, &err) != 0)
 					tool_fail(&t, "%s: %s", t.png, err.msg);
 			}
