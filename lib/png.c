@@ -440,7 +440,7 @@ fill(uint8_t *img, size_t width, size_t x, size_t y, size_t w, size_t h,
 
 /* Colour bar, its labels, the scale bar and the caption. */
 static void
-annotate(uint8_t *img, const rc_png_layout *l, const rc_png_opts *o,
+draw_annotations(uint8_t *img, const rc_png_layout *l, const rc_png_opts *o,
     const struct labels *lb)
 {
 	static const uint8_t over[3] = RC_OVERLAY_RGB;
@@ -549,7 +549,7 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 	for (size_t v = 0; v < height; v++)
 		memcpy(img + 3 * ((l.map_y + v) * l.width + l.map_x),
 		    rgb + 3 * v * width, 3 * width);
-	annotate(img, &l, o, &lb);
+	draw_annotations(img, &l, o, &lb);
 	status = encode(img, l.width, l.height, path, err);
 done:
 	free(val);
