@@ -14,8 +14,44 @@ OPTFLAGS ?= -O2 -g
 CFLAGS  ?= $(OPTFLAGS)
 WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L
-PKG_CFLAGS := $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS   := $(shell pkg-config --libs $(PKGS) 2>/dev/null)
+PKG_CONFIG ?= pkg-config
+PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
+
+# Before compiling anything: every library must be found, else name the
+# Debian packages to install (instead of a compiler error on fftw3.h).
+# libfftw3_omp has no pkg-config file; the compiler looks for it.
+# Test with e.g. make PKG_CONFIG=false, or make PKGS=nonexistent.
+DEB_fftw3 = libfftw3-dev
+DEB_fftw3_omp = libfftw3-dev
+DEB_gsl = libgsl-dev
+DEB_libpng = libpng-dev
+DEB_libzip = libzip-dev
+DEB_libxml-2.0 = libxml2-dev
+DEB_netcdf = libnetcdf-dev
+NODEP_GOALS = clean deps uninstall
+ifneq ($(filter-out $(NODEP_GOALS),$(or $(MAKECMDGOALS),all)),)
+HAVE_PKG_CONFIG := $(shell command -v $(PKG_CONFIG) >/dev/null 2>&1 && echo y)
+HAVE_CC := $(shell command -v $(CC) >/dev/null 2>&1 && echo y)
+MISSING := $(foreach p,$(PKGS),$(if $(shell $(PKG_CONFIG) --exists $(p) 2>/dev/null && echo y),,$(p)))
+MISSING += $(if $(filter /%,$(shell $(CC) -print-file-name=libfftw3_omp.so 2>/dev/null)),,fftw3_omp)
+MISSING := $(strip $(MISSING))
+ifneq ($(MISSING)$(if $(HAVE_PKG_CONFIG),,n)$(if $(HAVE_CC),,n),)
+MISSING_DEB = $(sort $(if $(HAVE_PKG_CONFIG),,pkg-config) \
+	$(if $(HAVE_CC),,build-essential) \
+	$(foreach p,$(MISSING),$(DEB_$(p))))
+MISSING_UNKNOWN = $(strip $(foreach p,$(MISSING),$(if $(DEB_$(p)),,$(p))))
+empty :=
+indent := $(empty)    $(empty)
+$(info roughcontact: not found: $(strip $(if $(HAVE_CC),,$(CC)) \
+	$(if $(HAVE_PKG_CONFIG),,$(PKG_CONFIG)) $(MISSING)))
+$(if $(MISSING_DEB),$(info roughcontact: install the Debian packages (as root, leave out sudo):))
+$(if $(MISSING_DEB),$(info $(indent)sudo apt-get install -y $(MISSING_DEB)))
+$(if $(MISSING_UNKNOWN),$(info roughcontact: no Debian package known for: $(MISSING_UNKNOWN)))
+$(info roughcontact: all build and test dependencies at once: make deps (as root))
+$(error missing build dependencies)
+endif
+endif
 ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) -Ilib -Itools $(PKG_CFLAGS)
 LDLIBS   = -lfftw3_omp $(PKG_LIBS) -lm
 ALL_LDFLAGS = -fopenmp $(SAN_FLAGS) $(LDFLAGS)

@@ -1,6 +1,13 @@
 /* cstats_plot.c - the gnuplot script of contact-stats: kappa(p*) with
  * error bars, one curve per group, Persson's and BGT's values as lines;
- * written as a script, or run through gnuplot into a PNG. */
+ * written as a script, or run through gnuplot into a PNG.
+ *
+ * Every tick of the logarithmic p* axis is labelled: ticks at the
+ * pressures of the data when there are at most MAX_DATA_TICKS of them (so
+ * one pressure still gets one), else at 1, 2 and 5 times the powers of
+ * ten in the range.  Curves take colours from a fixed list that leaves out
+ * the red of Persson's line and the black of BGT's; the legend goes above
+ * the plot, so long group labels cost height, not the plot's width. */
 #include "cstats.h"
 
 #include <errno.h>
@@ -14,6 +21,65 @@
 #include "atomic.h"
 
 extern char **environ;
+
+#define MAX_DATA_TICKS 10
+
+static const char *const curve_rgb[] = {
+	"#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf",
+	"#e377c2", "#7f7f7f", "#bcbd22"
+};
+#define PERSSON_RGB "#d62728"
+#define BGT_RGB "#000000"
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+/* The labelled ticks of the p* axis as a gnuplot "set xtics (...)". */
+static int
+write_xtics(FILE *fp, const rc_cstats *res, double pmin, double pmax,
+    rc_err *err)
+{
+	double *p = malloc(res->nrows * sizeof(double));
+	size_t n = 0;
+	int first = 1;
+
+	if (p == NULL)
+		return rc_seterr(err, "out of memory");
+	for (size_t i = 0; i < res->nrows; i++)
+		if (res->point[i].p_star > 0 && isfinite(res->point[i].p_star))
+			p[n++] = res->point[i].p_star;
+	qsort(p, n, sizeof(double), cmp_double);
+	/* distinct values: equal up to the 10 digits the data is written with */
+	{
+		size_t m = 0;
+		for (size_t i = 0; i < n; i++)
+			if (m == 0 || p[i] > p[m - 1] * (1 + 1e-10))
+				p[m++] = p[i];
+		n = m;
+	}
+	fputs("set xtics (", fp);
+	if (n <= MAX_DATA_TICKS) {
+		for (size_t i = 0; i < n; i++)
+			fprintf(fp, "%s'%.4g' %.10g", i ? ", " : "", p[i], p[i]);
+	} else {
+		for (double d = pow(10, floor(log10(pmin))); d <= pmax; d *= 10)
+			for (int k = 0; k < 3; k++) {
+				double t = d * (k == 0 ? 1 : k == 1 ? 2 : 5);
+				if (t < pmin || t > pmax)
+					continue;
+				fprintf(fp, "%s'%g' %.10g", first ? "" : ", ", t, t);
+				first = 0;
+			}
+	}
+	fputs(")\n", fp);
+	free(p);
+	return 0;
+}
 
 /* s as the inside of a gnuplot single-quoted string (a quote doubled). */
 static void
@@ -49,7 +115,7 @@ rc_cstats_gnuplot(FILE *fp, const rc_cstats *res, const char *script,
 	fprintf(fp, "set logscale x\n"
 	    "set xlabel 'p*'\n"
 	    "set ylabel 'kappa'\n"
-	    "set key outside right\n"
+	    "set key above horizontal samplen 2\n"
 	    "set grid\n");
 	for (size_t i = 0; i < res->nrows; i++) {
 		pmin = fmin(pmin, res->point[i].p_star);
@@ -57,6 +123,8 @@ rc_cstats_gnuplot(FILE *fp, const rc_cstats *res, const char *script,
 	}
 	/* reference lines across the whole range, a margin around the data */
 	fprintf(fp, "set xrange [%.6g:%.6g]\n", pmin / 1.5, pmax * 1.5);
+	if (write_xtics(fp, res, pmin / 1.5, pmax * 1.5, err) != 0)
+		return -1;
 	for (size_t k = 0, i = 0; k < res->ncurves; k++) {
 		fprintf(fp, "$curve%zu << EOD\n# p_star kappa kappa_err\n", k);
 		for (; i < res->nrows && res->point[i].curve == k; i++) {
@@ -69,10 +137,14 @@ rc_cstats_gnuplot(FILE *fp, const rc_cstats *res, const char *script,
 	}
 	fprintf(fp, "plot \\\n");
 	for (size_t k = 0; k < res->ncurves; k++)
-		fprintf(fp, "  $curve%zu using 1:2:3 with yerrorlines title '%s', \\\n",
-		    k, res->label[k]);
-	fprintf(fp, "  sqrt(8/pi) dashtype 2 title 'Persson sqrt(8/pi)', \\\n"
-	    "  sqrt(2*pi) dashtype 3 title 'BGT sqrt(2 pi)'\n");
+		fprintf(fp, "  $curve%zu using 1:2:3 with yerrorlines lw 2 lc rgb '%s' "
+		    "title '%s', \\\n", k,
+		    curve_rgb[k % (sizeof(curve_rgb) / sizeof(curve_rgb[0]))],
+		    res->label[k]);
+	fprintf(fp, "  sqrt(8/pi) with lines lw 2 dashtype 2 lc rgb '%s' "
+	    "title 'Persson sqrt(8/pi) = 1.596', \\\n"
+	    "  sqrt(2*pi) with lines lw 2 dashtype 3 lc rgb '%s' "
+	    "title 'BGT sqrt(2 pi) = 2.507'\n", PERSSON_RGB, BGT_RGB);
 	if (ferror(fp))
 		return rc_seterr(err, "writing the gnuplot script: %s",
 		    strerror(errno));

@@ -6,6 +6,8 @@
  * values (of the overlay mask too), so downsampling averages blocks and
  * upsampling repeats values.  A line (nx x 1 or 1 x ny) becomes a strip.
  * Rows are drawn as stored: grid row j = 0 is the top of the image.
+ * Annotations (colour bar, labels, scale bar, caption) are laid out around
+ * the map on a white canvas; see png.h.
  */
 #include "png.h"
 
@@ -14,15 +16,22 @@
  * (libpng 1.6 installs its headers in include/libpng16 everywhere). */
 #include <libpng16/png.h>
 #include <setjmp.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "atomic.h"
 #include "colormap.h"
+#include "png_text.h"
 
 #define DEFAULT_MAX_SIZE 1024
 #define STRIP_MIN 16		/* least thickness of a line's strip */
+#define BIG_TEXT_FROM 256	/* map side from which text is drawn at scale 2 */
+#define LABEL_DIGITS 3		/* significant digits of the range labels */
+
+static const uint8_t canvas_rgb[3] = { 255, 255, 255 };
+static const uint8_t ink_rgb[3] = { 0, 0, 0 };
 
 void
 rc_png_defaults(rc_png_opts *o)
@@ -31,6 +40,8 @@ rc_png_defaults(rc_png_opts *o)
 	o->style = RC_PNG_AUTO;
 	o->max_size = DEFAULT_MAX_SIZE;
 	o->overlay = NULL;
+	o->annotate = 1;
+	o->caption = NULL;
 }
 
 void
@@ -201,28 +212,43 @@ put(uint8_t *px, const uint8_t c[3])
 	px[2] = c[2];
 }
 
-/* Colour the resampled values; the range is that of the whole grid. */
+/* The colour range: min and max of the finite values (of log10 of the
+ * positive ones on a log scale); lo > hi if there are none. */
 static void
-colour(const rc_grid *g, enum rc_png_style style, const double *val,
-    size_t npix, uint8_t *rgb)
+value_range(const rc_grid *g, enum rc_png_style style, double *lo, double *hi)
 {
-	static const uint8_t mask0[3] = RC_MASK0_RGB, mask1[3] = RC_MASK1_RGB;
-	static const uint8_t nonpos[3] = RC_NONPOS_RGB, nan_rgb[3] = RC_NAN_RGB;
 	size_t n = rc_grid_size(g);
-	double lo = INFINITY, hi = -INFINITY;
-	uint8_t table[256][3];
 
-	for (int k = 0; k < 256; k++)
-		rc_colormap_rgb8(k / 255.0, table[k]);
+	*lo = INFINITY;
+	*hi = -INFINITY;
 	for (size_t k = 0; k < n; k++) {
 		double z = g->z[k];
 		if (!isfinite(z) || (style == RC_PNG_LOG && !(z > 0)))
 			continue;
 		if (style == RC_PNG_LOG)
 			z = log10(z);
-		lo = fmin(lo, z);
-		hi = fmax(hi, z);
+		*lo = fmin(*lo, z);
+		*hi = fmax(*hi, z);
 	}
+}
+
+static void
+colormap_table(uint8_t table[256][3])
+{
+	for (int k = 0; k < 256; k++)
+		rc_colormap_rgb8(k / 255.0, table[k]);
+}
+
+/* Colour the resampled values over the range [lo, hi] of the whole grid. */
+static void
+colour(enum rc_png_style style, double lo, double hi, const double *val,
+    size_t npix, uint8_t *rgb)
+{
+	static const uint8_t mask0[3] = RC_MASK0_RGB, mask1[3] = RC_MASK1_RGB;
+	static const uint8_t nonpos[3] = RC_NONPOS_RGB, nan_rgb[3] = RC_NAN_RGB;
+	uint8_t table[256][3];
+
+	colormap_table(table);
 	for (size_t p = 0; p < npix; p++) {
 		double v = val[p], t;
 		uint8_t *px = rgb + 3 * p;
@@ -265,6 +291,208 @@ draw_overlay(const double *frac, size_t npix, uint8_t *rgb)
 	}
 }
 
+static enum rc_png_style
+resolve_style(const rc_grid *g, enum rc_png_style style)
+{
+	if (style != RC_PNG_AUTO)
+		return style;
+	return g->kind == RC_KIND_PRESSURE ? RC_PNG_LOG :
+	    g->kind == RC_KIND_MASK ? RC_PNG_MASK : RC_PNG_LINEAR;
+}
+
+/* The unit of the values: z_unit, else the lateral unit for lengths. */
+static const char *
+value_unit(const rc_grid *g)
+{
+	if (g->z_unit[0] != '\0')
+		return g->z_unit;
+	if (g->kind == RC_KIND_HEIGHT || g->kind == RC_KIND_GAP ||
+	    g->kind == RC_KIND_DISPLACEMENT)
+		return g->unit;
+	return "";
+}
+
+/* What the annotations say: the range labels (top, bottom, middle) and
+ * the scale bar's length in pixels and its label. */
+struct labels {
+	char top[64], bottom[64], middle[8], scale[64];
+	int bar;		/* a colour bar is drawn */
+	size_t scale_px;	/* 0: no scale bar */
+};
+
+static void
+range_label(char *buf, size_t len, double v, const char *unit)
+{
+	snprintf(buf, len, "%.*g%s%s", LABEL_DIGITS, v, unit[0] ? " " : "", unit);
+}
+
+static void
+make_labels(const rc_grid *g, enum rc_png_style style, size_t map_w,
+    struct labels *lb)
+{
+	double lo, hi;
+
+	memset(lb, 0, sizeof(*lb));
+	value_range(g, style, &lo, &hi);
+	lb->bar = style != RC_PNG_MASK && lo <= hi;
+	if (lb->bar) {
+		const char *unit = value_unit(g);
+		if (style == RC_PNG_LOG) {
+			lo = pow(10, lo);
+			hi = pow(10, hi);
+			strcpy(lb->middle, "log");
+		}
+		range_label(lb->top, sizeof(lb->top), hi, unit);
+		range_label(lb->bottom, sizeof(lb->bottom), lo, unit);
+	}
+	/* A round length of at most a quarter of lx, along x. */
+	if (g->nx > 1 && g->lx > 0 && isfinite(g->lx)) {
+		double target = g->lx / 4, p10 = pow(10, floor(log10(target)));
+		double m = target / p10, len;
+
+		len = (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p10;
+		lb->scale_px = (size_t)fmax(1, nearbyint(len / g->lx * (double)map_w));
+		snprintf(lb->scale, sizeof(lb->scale), "%g%s%s", len,
+		    g->unit[0] ? " " : "", g->unit);
+	}
+}
+
+static size_t
+max_sz(size_t a, size_t b)
+{
+	return a > b ? a : b;
+}
+
+/* The layout for a map of map_w x map_h pixels with these labels. */
+static void
+layout(const rc_png_opts *o, size_t map_w, size_t map_h,
+    const struct labels *lb, rc_png_layout *l)
+{
+	int s = max_sz(map_w, map_h) >= BIG_TEXT_FROM ? 2 : 1;
+	size_t m = 4 * (size_t)s, gap = 4 * (size_t)s, th = RC_FONT_H * (size_t)s;
+	size_t right, y;
+
+	memset(l, 0, sizeof(*l));
+	l->map_w = map_w;
+	l->map_h = map_h;
+	l->scale = s;
+	if (!o->annotate) {
+		l->width = map_w;
+		l->height = map_h;
+		return;
+	}
+	l->map_x = m;
+	l->map_y = m;
+	right = m + map_w;
+	y = m + map_h;
+	if (lb->bar) {
+		l->bar_x = m + map_w + 2 * gap;
+		l->bar_y = m;
+		l->bar_w = 8 * (size_t)s;
+		/* Room for the top, middle and bottom labels. */
+		l->bar_h = max_sz(map_h, 3 * th + 2 * gap);
+		right = l->bar_x + l->bar_w + gap +
+		    max_sz(rc_text_width(lb->top, s), max_sz(rc_text_width(lb->bottom, s),
+		    rc_text_width(lb->middle, s)));
+		y = max_sz(y, m + l->bar_h);
+	}
+	if (lb->scale_px) {
+		y += 2 * gap;
+		right = max_sz(right, m + lb->scale_px + gap + rc_text_width(lb->scale, s));
+		y += th;
+	}
+	if ((o->caption && o->caption[0]) || o->overlay) {
+		size_t w = o->caption ? rc_text_width(o->caption, s) : 0;
+		if (o->overlay)
+			w += (w ? 2 * gap : 0) + th + gap + rc_text_width("contact", s);
+		y += 2 * gap;
+		right = max_sz(right, m + w);
+		y += th;
+	}
+	l->width = right + m;
+	l->height = y + m;
+}
+
+void
+rc_png_layout_of(const rc_grid *g, const rc_png_opts *o, rc_png_layout *l)
+{
+	rc_png_opts def;
+	struct labels lb;
+	size_t w, h;
+
+	if (o == NULL) {
+		rc_png_defaults(&def);
+		o = &def;
+	}
+	rc_png_size(g->nx, g->ny, g->lx, g->ly, o->max_size, &w, &h);
+	make_labels(g, resolve_style(g, o->style), w, &lb);
+	layout(o, w, h, &lb, l);
+}
+
+static void
+fill(uint8_t *img, size_t width, size_t x, size_t y, size_t w, size_t h,
+    const uint8_t c[3])
+{
+	for (size_t v = y; v < y + h; v++)
+		for (size_t u = x; u < x + w; u++)
+			memcpy(img + 3 * (v * width + u), c, 3);
+}
+
+/* Colour bar, its labels, the scale bar and the caption. */
+static void
+draw_annotations(uint8_t *img, const rc_png_layout *l, const rc_png_opts *o,
+    const struct labels *lb)
+{
+	static const uint8_t over[3] = RC_OVERLAY_RGB;
+	int s = l->scale;
+	size_t gap = 4 * (size_t)s, th = RC_FONT_H * (size_t)s, y;
+	uint8_t table[256][3];
+
+	y = l->map_y + l->map_h;
+	if (lb->bar) {
+		long lx = (long)(l->bar_x + l->bar_w + gap);
+		colormap_table(table);
+		for (size_t v = 0; v < l->bar_h; v++) {
+			double t = l->bar_h > 1 ? 1 - (double)v / (double)(l->bar_h - 1) : 1;
+			fill(img, l->width, l->bar_x, l->bar_y + v, l->bar_w, 1,
+			    table[lrint(255 * t)]);
+		}
+		rc_text_draw(img, l->width, l->height, lx, (long)l->bar_y, lb->top, s,
+		    ink_rgb);
+		rc_text_draw(img, l->width, l->height, lx,
+		    (long)(l->bar_y + l->bar_h - th), lb->bottom, s, ink_rgb);
+		rc_text_draw(img, l->width, l->height, lx,
+		    (long)(l->bar_y + (l->bar_h - th) / 2), lb->middle, s, ink_rgb);
+		y = max_sz(y, l->bar_y + l->bar_h);
+	}
+	if (lb->scale_px) {
+		size_t x = l->map_x, thick = 2 * (size_t)s;
+		y += 2 * gap;
+		/* A bar with end ticks, as tall as the text beside it. */
+		fill(img, l->width, x, y + (th - thick) / 2, lb->scale_px, thick, ink_rgb);
+		fill(img, l->width, x, y, (size_t)s, th, ink_rgb);
+		fill(img, l->width, x + lb->scale_px - (size_t)s, y, (size_t)s, th,
+		    ink_rgb);
+		rc_text_draw(img, l->width, l->height, (long)(x + lb->scale_px + gap),
+		    (long)y, lb->scale, s, ink_rgb);
+		y += th;
+	}
+	if ((o->caption && o->caption[0]) || o->overlay) {
+		size_t x = l->map_x;
+		y += 2 * gap;
+		if (o->caption && o->caption[0]) {
+			rc_text_draw(img, l->width, l->height, (long)x, (long)y, o->caption,
+			    s, ink_rgb);
+			x += rc_text_width(o->caption, s) + 2 * gap;
+		}
+		if (o->overlay) {
+			fill(img, l->width, x, y, th, th, over);
+			rc_text_draw(img, l->width, l->height, (long)(x + th + gap), (long)y,
+			    "contact", s, ink_rgb);
+		}
+	}
+}
+
 int
 rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
     rc_err *err)
@@ -272,25 +500,27 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 	rc_png_opts def;
 	enum rc_png_style style;
 	struct axis ax, ay;
+	struct labels lb;
+	rc_png_layout l;
 	size_t width, height, npix;
-	double *val = NULL, *line = NULL;
-	uint8_t *rgb = NULL;
+	double *val = NULL, *line = NULL, lo, hi;
+	uint8_t *rgb = NULL, *img = NULL;
 	int status = -1;
 
 	if (o == NULL) {
 		rc_png_defaults(&def);
 		o = &def;
 	}
-	style = o->style;
-	if (style == RC_PNG_AUTO)
-		style = g->kind == RC_KIND_PRESSURE ? RC_PNG_LOG :
-		    g->kind == RC_KIND_MASK ? RC_PNG_MASK : RC_PNG_LINEAR;
+	style = resolve_style(g, o->style);
 	if (o->overlay != NULL && (o->overlay->nx != g->nx || o->overlay->ny != g->ny))
 		return rc_seterr(err, "overlay mask is %zux%zu, the map %zux%zu",
 		    o->overlay->nx, o->overlay->ny, g->nx, g->ny);
 	rc_png_size(g->nx, g->ny, g->lx, g->ly, o->max_size, &width, &height);
-	if (width > PNG_UINT_31_MAX || height > PNG_UINT_31_MAX)
-		return rc_seterr(err, "PNG of %zux%zu pixels is too large", width, height);
+	make_labels(g, style, width, &lb);
+	layout(o, width, height, &lb, &l);
+	if (l.width > PNG_UINT_31_MAX || l.height > PNG_UINT_31_MAX)
+		return rc_seterr(err, "PNG of %zux%zu pixels is too large", l.width,
+		    l.height);
 	npix = width * height;
 	if (axis_init(&ax, g->nx, width, err) != 0)
 		return -1;
@@ -303,16 +533,29 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 	    (rgb = rc_malloc(npix * 3, err)) == NULL)
 		goto done;
 	resample(g->z, g->nx, &ax, width, &ay, height, line, val);
-	colour(g, style, val, npix, rgb);
+	value_range(g, style, &lo, &hi);
+	colour(style, lo, hi, val, npix, rgb);
 	if (o->overlay != NULL) {
 		resample(o->overlay->z, g->nx, &ax, width, &ay, height, line, val);
 		draw_overlay(val, npix, rgb);
 	}
-	status = encode(rgb, width, height, path, err);
+	if (!o->annotate) {
+		status = encode(rgb, width, height, path, err);
+		goto done;
+	}
+	if ((img = rc_malloc(l.width * l.height * 3, err)) == NULL)
+		goto done;
+	fill(img, l.width, 0, 0, l.width, l.height, canvas_rgb);
+	for (size_t v = 0; v < height; v++)
+		memcpy(img + 3 * ((l.map_y + v) * l.width + l.map_x),
+		    rgb + 3 * v * width, 3 * width);
+	draw_annotations(img, &l, o, &lb);
+	status = encode(img, l.width, l.height, path, err);
 done:
 	free(val);
 	free(line);
 	free(rgb);
+	free(img);
 	axis_free(&ax);
 	axis_free(&ay);
 	return status;

@@ -5,6 +5,16 @@
  * contact mask drawn over a height map.  One image pixel per grid point
  * unless the grid exceeds max_size, in which case it is block-averaged
  * down; the aspect ratio follows lx:ly.  Written atomically.
+ *
+ * Annotated (the default): the map on a white canvas with, at its right, a
+ * colour bar from the smallest value (bottom) to the largest (top) labelled
+ * with both (3 significant digits, the value unit if known; "log" at its
+ * middle on a log scale; no bar for a mask), below it a scale bar of a round
+ * length (1, 2 or 5 times a power of ten, at most a quarter of lx) labelled
+ * with that length and the lateral unit, and below that an optional
+ * caption, with a swatch labelled "contact" when an overlay is drawn.
+ * Text is drawn with the font of png_text.h, twice as large for maps
+ * whose longer side is 256 pixels or more.
  */
 #ifndef RC_PNG_H
 #define RC_PNG_H
@@ -22,7 +32,17 @@ typedef struct rc_png_opts {
 	enum rc_png_style style;
 	size_t max_size;		/* longest image side; 0 = 1024 */
 	const rc_grid *overlay;		/* mask drawn over the map, or NULL */
+	int annotate;			/* colour bar, range, scale bar, caption */
+	const char *caption;		/* text under the scale bar, or NULL */
 } rc_png_opts;
+
+/* Where rc_png_write puts things (pixels; bar_w = 0: no colour bar). */
+typedef struct rc_png_layout {
+	size_t width, height;		/* the whole image */
+	size_t map_x, map_y, map_w, map_h;
+	size_t bar_x, bar_y, bar_w, bar_h;
+	int scale;			/* font scale */
+} rc_png_layout;
 
 void rc_png_defaults(rc_png_opts *o);
 /* The image size rc_png_write uses: square pixels of min(dx, dy), longest
@@ -30,6 +50,8 @@ void rc_png_defaults(rc_png_opts *o);
  * strip at least 16 pixels thick.  Colours: see colormap.h. */
 void rc_png_size(size_t nx, size_t ny, double lx, double ly, size_t max_size,
     size_t *width, size_t *height);
+/* The layout rc_png_write uses for g with o (NULL: defaults). */
+void rc_png_layout_of(const rc_grid *g, const rc_png_opts *o, rc_png_layout *l);
 int rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
     rc_err *err);
 

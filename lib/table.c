@@ -160,6 +160,8 @@ tsv_cell(FILE *fp, const char *s)
 int
 rc_table_write(rc_table_out *t, const rc_row *r, rc_err *err)
 {
+	if (t->kept != NULL)
+		return rc_table_keep_pretty(t, r, err);
 	if (t->nrows == 0) {
 		t->header = calloc(r->n ? r->n : 1, sizeof(*t->header));
 		if (t->header == NULL)
@@ -218,7 +220,8 @@ rc_table_write(rc_table_out *t, const rc_row *r, rc_err *err)
 int
 rc_table_end(rc_table_out *t, rc_err *err)
 {
-	(void)err;
+	if (t->kept != NULL)
+		return rc_table_write_pretty(t, err);
 	if (t->json)
 		fputs(t->nrows ? "\n]\n" : "[]\n", t->fp);
 	for (size_t i = 0; i < t->ncols; i++)

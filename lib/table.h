@@ -36,11 +36,22 @@ typedef struct rc_table_out {
 	size_t nrows;
 	size_t ncols;
 	char **header;
+	struct rc_table_kept *kept;	/* rows of the pretty view, or NULL */
+	size_t pretty_width;
 } rc_table_out;
 
 void rc_table_begin(rc_table_out *t, FILE *fp, int json);
 int rc_table_write(rc_table_out *t, const rc_row *r, rc_err *err);
 /* Closes the JSON array; frees the header.  Does not close fp. */
 int rc_table_end(rc_table_out *t, rc_err *err);
+
+/* The pretty view, for a person at a terminal (table_pretty.c): after
+ * rc_table_begin (not JSON), rows are kept and rc_table_end draws them
+ * aligned, numbers rounded to 4 significant digits (integers whole), a
+ * rule under the header; a table wider than `width` characters (0 = 80)
+ * is drawn transposed, one line per column.  Not for reading back. */
+int rc_table_pretty(rc_table_out *t, size_t width, rc_err *err);
+int rc_table_keep_pretty(rc_table_out *t, const rc_row *r, rc_err *err);
+int rc_table_write_pretty(rc_table_out *t, rc_err *err);
 
 #endif

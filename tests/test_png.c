@@ -1,6 +1,7 @@
 /* test_png.c - PNG previews decoded back with libpng: size, aspect,
  * colours of the extremes, mask and overlay colours, log scale,
- * downsampling; the colormap's lightness. */
+ * downsampling; the colormap's lightness; the annotations (colour bar,
+ * range labels, scale bar, caption) and the bitmap font. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -13,6 +14,7 @@
 #include "colormap.h"
 #include "grid.h"
 #include "png.h"
+#include "png_text.h"
 #include "testlib.h"
 
 struct image {
@@ -74,6 +76,7 @@ write_png(const rc_grid *g, const char *path, enum rc_png_style style,
 	o.style = style;
 	o.max_size = max_size;
 	o.overlay = overlay;
+	o.annotate = 0;		/* the map alone: its pixels are what is tested */
 	if (rc_png_write(g, path, &o, &err) != 0) {
 		fprintf(stderr, "rc_png_write: %s\n", err.msg);
 		return -1;
@@ -167,7 +170,7 @@ test_linear(void)
 	test_true(same(pixel(&im, 3, 5), first), "no overlay where the mask is 0");
 	free(im.rgb);
 	rc_grid *small = rc_grid_new(8, 8, 1, 1, &err);
-	test_true(rc_png_write(g, path, &(rc_png_opts){ RC_PNG_AUTO, 0, small }, &err) != 0,
+	test_true(rc_png_write(g, path, &(rc_png_opts){ .style = RC_PNG_AUTO, .overlay = small }, &err) != 0,
 	    "overlay of another size is an error (%s)", err.msg);
 	rc_grid_free(small);
 	rc_grid_free(mask);
@@ -301,9 +304,185 @@ test_failures(void)
 	rc_grid_free(g);
 }
 
+/* Digits and the characters of numbers must be told apart: every pair
+ * of glyphs differs in at least 3 of the 35 pixels (one stray pixel of
+ * resampling or of a viewer cannot turn one into another). */
+static void
+test_font(void)
+{
+	const char set[] = "0123456789.-+=e*";
+	int worst = 35, ok = 1;
+	uint8_t img[2 * 7 * 2 * 5 * 3], ink[3] = { 1, 2, 3 };
+
+	for (const char *a = set; *a; a++)
+		for (const char *b = a + 1; *b; b++) {
+			const uint8_t *ga = rc_font_glyph(*a), *gb = rc_font_glyph(*b);
+			int d = 0;
+			for (int r = 0; r < RC_FONT_H; r++)
+				d += __builtin_popcount((unsigned)(ga[r] ^ gb[r]) & 0x1F);
+			worst = d < worst ? d : worst;
+		}
+	test_true(worst >= 3, "glyphs of numbers differ in >= 3 pixels (least %d)", worst);
+	test_true(memcmp(rc_font_glyph('A'), rc_font_glyph('a'), RC_FONT_H) == 0,
+	    "upper case drawn as lower case");
+	test_int((long long)rc_text_width("0123", 2), (4 * 6 - 1) * 2,
+	    "text width: 6 columns a character less the last blank, times scale");
+	test_int((long long)rc_text_width("", 1), 0, "empty text has no width");
+	/* At scale 2 every font pixel is a 2x2 block of the glyph's bits. */
+	memset(img, 0, sizeof(img));
+	rc_text_draw(img, 10, 14, 0, 0, "8", 2, ink);
+	for (int v = 0; v < 14; v++)
+		for (int u = 0; u < 10; u++) {
+			int bit = (rc_font_glyph('8')[v / 2] >> (4 - u / 2)) & 1;
+			ok &= (img[3 * (v * 10 + u)] == (bit ? 1 : 0));
+		}
+	test_true(ok, "scale 2: each font pixel a 2x2 block");
+	/* Clipping: drawing partly outside touches nothing out of bounds
+	 * (ASan would tell) and draws the visible part. */
+	memset(img, 0, sizeof(img));
+	rc_text_draw(img, 10, 14, -3, -5, "88", 1, ink);
+	test_true(img[3 * (0 * 10 + 0)] == 1 || img[3 * (1 * 10 + 0)] == 1 ||
+	    img[3 * (0 * 10 + 1)] == 1, "clipped text draws its visible part");
+}
+
+/* Does the image hold text s drawn at (x, y), pixel for pixel (ink where
+ * the font has a pixel, canvas white elsewhere in the glyph cells)? */
+static int
+has_text(const struct image *im, size_t x, size_t y, const char *s, int scale)
+{
+	size_t w = rc_text_width(s, scale), h = RC_FONT_H * (size_t)scale;
+	uint8_t *want = calloc(w * h * 3, 1);
+	uint8_t black[3] = { 0, 0, 0 }, white[3] = { 255, 255, 255 };
+	int ok = x + w <= im->width && y + h <= im->height;
+
+	memset(want, 255, w * h * 3);
+	rc_text_draw(want, w, h, 0, 0, s, scale, black);
+	for (size_t v = 0; ok && v < h; v++)
+		for (size_t u = 0; ok && u < w; u++) {
+			const uint8_t *got = pixel(im, x + u, y + v);
+			ok = same(got, want + 3 * (v * w + u)) &&
+			    (same(got, black) || same(got, white));
+		}
+	free(want);
+	return ok;
+}
+
+static void
+test_annotated(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(64, 32, 2.0, 1.0, &err);
+	struct image im, bare;
+	rc_png_layout l;
+	rc_png_opts o;
+	uint8_t table[256][3], white[3] = { 255, 255, 255 }, black[3] = { 0, 0, 0 };
+	char *path = tmppath("ann.png"), *bpath = tmppath("bare.png");
+	int ok = 1;
+	size_t y, th;
+
+	for (size_t j = 0; j < 32; j++)
+		for (size_t i = 0; i < 64; i++)
+			g->z[j * 64 + i] = sin(0.1 * i) * cos(0.2 * j);
+	g->z[5 * 64 + 3] = -2;
+	g->z[20 * 64 + 10] = 3;
+	for (int k = 0; k < 256; k++)
+		rc_colormap_rgb8(k / 255.0, table[k]);
+	rc_png_defaults(&o);
+	test_true(o.annotate == 1, "annotated by default");
+	test_true(rc_png_write(g, path, &o, &err) == 0, "write annotated PNG");
+	write_png(g, bpath, RC_PNG_AUTO, 0, NULL);
+	test_true(decode(path, &im) == 0 && decode(bpath, &bare) == 0, "both decode");
+	rc_png_layout_of(g, &o, &l);
+	test_true(im.width == l.width && im.height == l.height,
+	    "image size is the layout's (%zux%zu)", im.width, im.height);
+	test_true(l.bar_w > 0 && l.width >= l.map_x + 64 + l.bar_w &&
+	    l.bar_x >= l.map_x + 64, "the image grows by the colour bar, right of the map");
+	test_true(l.height > 32 + 2 * RC_FONT_H, "and by the scale bar below");
+	/* The map is the bare map, pixel for pixel, at its offset. */
+	for (size_t v = 0; v < 32; v++)
+		ok &= memcmp(pixel(&im, l.map_x, l.map_y + v), pixel(&bare, 0, v), 64 * 3) == 0;
+	test_true(ok, "map pixels unchanged by the annotations");
+	/* The bar runs through the colormap, top = max, bottom = min. */
+	ok = l.bar_h >= 32;
+	for (size_t v = 0; v < l.bar_h; v++) {
+		double t = 1 - (double)v / (double)(l.bar_h - 1);
+		for (size_t u = l.bar_x; u < l.bar_x + l.bar_w; u++)
+			ok &= same(pixel(&im, u, l.bar_y + v), table[lrint(255 * t)]);
+	}
+	test_true(ok, "colour bar pixels follow the colormap");
+	test_true(same(pixel(&im, l.bar_x, l.bar_y), table[255]) &&
+	    same(pixel(&im, l.bar_x, l.bar_y + l.bar_h - 1), table[0]),
+	    "bar: last colour at the top, first at the bottom");
+	test_true(same(pixel(&im, 0, 0), white), "white canvas");
+	/* The range as text beside the bar: max 3 at the top, min -2 at the
+	 * bottom (the map is 64 wide: font scale 1). */
+	th = RC_FONT_H;
+	test_int(l.scale, 1, "small map: font scale 1");
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y, "3", 1),
+	    "max written at the top of the bar");
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + l.bar_h - th, "-2", 1),
+	    "min written at the bottom of the bar");
+	/* Scale bar: lx = 2, so a quarter is 0.5 (a round length), 16 px of
+	 * the 64 px map; labelled "0.5" after a gap. */
+	y = (l.map_y + 32 > l.bar_y + l.bar_h ? l.map_y + 32 : l.bar_y + l.bar_h) + 8;
+	ok = 1;
+	for (size_t u = l.map_x; u < l.map_x + 16; u++)
+		ok &= same(pixel(&im, u, y + 3), black);
+	ok &= same(pixel(&im, l.map_x + 16, y + 3), white);
+	test_true(ok, "scale bar 16 px long for 0.5 of lx = 2 on 64 px");
+	test_true(has_text(&im, l.map_x + 16 + 4, y, "0.5", 1), "scale bar labelled 0.5");
+	free(im.rgb);
+
+	/* A caption and an overlay add a line: the text and a swatch in the
+	 * overlay colour. */
+	rc_grid *mask = rc_grid_new(64, 32, 2.0, 1.0, &err);
+	uint8_t over[3] = RC_OVERLAY_RGB;
+	rc_png_layout lc;
+	mask->kind = RC_KIND_MASK;
+	o.overlay = mask;
+	o.caption = "p*=0.05 a_r=0.1";
+	rc_png_layout_of(g, &o, &lc);
+	test_true(lc.height == l.height + 8 + th, "a caption line adds 8 + 7 px");
+	rc_png_write(g, path, &o, &err);
+	decode(path, &im);
+	y += th + 8;
+	test_true(has_text(&im, lc.map_x, y, "p*=0.05 a_r=0.1", 1), "caption written");
+	test_true(same(pixel(&im, lc.map_x + rc_text_width(o.caption, 1) + 8, y), over),
+	    "contact swatch in the overlay colour");
+	free(im.rgb);
+	free(bare.rgb);
+
+	/* A mask has no colour bar; a log map says "log" on its bar. */
+	rc_png_defaults(&o);
+	rc_png_layout_of(mask, &o, &l);
+	test_true(l.bar_w == 0, "mask: no colour bar");
+	g->kind = RC_KIND_PRESSURE;
+	for (size_t k = 0; k < 64 * 32; k++)
+		g->z[k] = k < 100 ? 0 : (double)k;
+	g->z[100] = 1e-3;
+	rc_png_write(g, path, &o, &err);
+	decode(path, &im);
+	rc_png_layout_of(g, &o, &l);
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y, "2.05e+03", 1) &&
+	    has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + l.bar_h - th, "0.001", 1),
+	    "log map: the real values at the ends");
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + (l.bar_h - th) / 2, "log", 1),
+	    "log map: 'log' at the middle of the bar");
+	free(im.rgb);
+	/* Big maps get text at scale 2. */
+	rc_grid *big = rc_grid_new(300, 300, 1, 1, &err);
+	rc_png_layout_of(big, NULL, &l);
+	test_int(l.scale, 2, "map of 300 px: font scale 2");
+	rc_grid_free(big);
+	rc_grid_free(mask);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
+	test_font();
+	test_annotated();
 	test_colormap();
 	test_linear();
 	test_aspect_and_strip();

@@ -6,6 +6,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -118,6 +119,9 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 		return 1;
 	case OPT_PNG:
 		t->png = arg;
+		return 1;
+	case OPT_PRETTY:
+		t->pretty = 1;
 		return 1;
 	case OPT_VERSION:
 		printf("%s %s\n", t->name, RC_VERSION);
@@ -374,4 +378,31 @@ tool_not_input(struct tool *t, const char *opt, const char *out, const char *in)
 	    so.st_ino == si.st_ino)
 		tool_bad(t, "%s %s: that is the input %s; refusing to replace it "
 		    "with output of another kind", opt, out, in);
+}
+
+/* The terminal's width: TIOCGWINSZ, else $COLUMNS, else 0 (the default). */
+static size_t
+terminal_width(int fd)
+{
+	struct winsize ws;
+	const char *env = getenv("COLUMNS");
+	long n;
+
+	if (ioctl(fd, TIOCGWINSZ, &ws) == 0 && ws.ws_col > 0)
+		return ws.ws_col;
+	if (env != NULL && (n = strtol(env, NULL, 10)) > 0 && n < 100000)
+		return (size_t)n;
+	return 0;
+}
+
+void
+tool_table_begin(const struct tool *t, rc_table_out *tab, FILE *fp)
+{
+	rc_err err;
+
+	rc_table_begin(tab, fp, t->json);
+	if (t->json || !(t->pretty || isatty(fileno(fp))))
+		return;
+	if (rc_table_pretty(tab, terminal_width(fileno(fp)), &err) != 0)
+		tool_fail(t, "%s", err.msg);
 }

@@ -14,6 +14,7 @@
 #include "fft.h"
 #include "grid.h"
 #include "io.h"
+#include "table.h"
 
 #define RC_VERSION "0.1.0"
 
@@ -24,6 +25,7 @@ enum {
 	OPT_VERSION,
 	OPT_WISDOM,
 	OPT_FFT_EFFORT,
+	OPT_PRETTY,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -35,6 +37,7 @@ struct tool {
 	int quiet;		/* -q */
 	int threads;		/* -j N, 0 = all cores */
 	int json;		/* --json */
+	int pretty;		/* --pretty: aligned table even when not a terminal */
 	double lx, ly;		/* -L, cell size for inputs that have none */
 	int have_l;
 	int nbad;		/* usage problems reported so far */
@@ -107,6 +110,11 @@ void tool_write_grid(const struct tool *t, rc_grid *g, const char *path);
 void tool_output(struct tool *t, const char *opt, const char *path, int binary);
 /* Check an output path's extension up front (tool_bad if unknown). */
 void tool_check_grid_path(struct tool *t, const char *opt, const char *path);
+
+/* rc_table_begin on fp, in the pretty view (rc_table_pretty, as wide as
+ * the terminal) when the table is TSV and fp is a terminal or --pretty
+ * was given; exits 1 if out of memory. */
+void tool_table_begin(const struct tool *t, rc_table_out *tab, FILE *fp);
 
 /* Flush stdout and turn a write error into exit status 1. */
 int tool_exit(const struct tool *t, int status);

@@ -41,13 +41,15 @@ usage(void)
 {
 	printf(
 "usage: contact-stats [options] [FILE ...]\n"
-"       contact-stats --schedule --eps-ref E --p-ref P -p P[,P...] [--json]\n"
+"       contact-stats --schedule --eps-ref E --p-ref P -p P[,P...]\n"
+"           [--json | --pretty]\n"
 "Reads gfmd-solve result rows (TSV or JSON; FILE - or none: standard input),\n"
 "extrapolates a_r to the continuum limit per surface and pressure, averages\n"
 "over seeds and writes a_r, kappa, kappa_c with errors, one row per group\n"
 "and pressure.\n"
 "  -o FILE             output (default standard output)\n"
 "  --json              JSON instead of TSV\n"
+"  --pretty            aligned, rounded table (default when output is a terminal)\n"
 "  -q                  no warnings about missing optional columns\n"
 "  -j N                accepted like every tool's; no effect (one thread)\n"
 "  --group-by COLS     key columns (comma list) instead of all carried ones\n"
@@ -134,6 +136,7 @@ parse(int argc, char **argv, struct opts *o)
 	static const char optstring[] = "o:p:j:qh";
 	static const struct option longopts[] = {
 		{ "json", no_argument, NULL, OPT_JSON },
+		{ "pretty", no_argument, NULL, OPT_PRETTY },
 		{ "png", required_argument, NULL, OPT_PNG },
 		{ "version", no_argument, NULL, OPT_VERSION },
 		{ "help", no_argument, NULL, 'h' },
@@ -314,7 +317,7 @@ write_rows(const rc_row *row, size_t n)
 
 	if (rc_atomic_open(&out, t.out, &err) != 0)
 		tool_fail(&t, "%s", err.msg);
-	rc_table_begin(&tab, out.fp, t.json);
+	tool_table_begin(&t, &tab, out.fp);
 	for (size_t i = 0; i < n; i++)
 		if (rc_table_write(&tab, &row[i], &err) != 0) {
 			rc_atomic_abort(&out);

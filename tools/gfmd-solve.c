@@ -137,7 +137,7 @@ usage(void)
 "           [--method fire|cg] [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
-"           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json]\n"
+"           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
 "           [-j N] [-q]\n"
 "           [-L LX[xLY]] [FILE]\n"
 "Solve the frictionless contact of an elastic half space (above) on the\n"
@@ -166,6 +166,7 @@ usage(void)
 "                       pressures and solver options default to FILE's)\n"
 "  -o FILE              result table (default standard output)\n"
 "  --json               JSON instead of TSV\n"
+"  --pretty             aligned, rounded table (default on a terminal)\n"
 "  -j N                 threads (default all cores)\n"
 "  --fft-effort E       estimate, measure or patient FFT planning (default:\n"
 "                       measure for 1024^2 points and more, else estimate)\n"
@@ -348,7 +349,7 @@ main(int argc, char **argv)
 
 	if (rc_atomic_open(&out, t.out, &err) != 0)
 		tool_fail(&t, "%s: %s", t.out, err.msg);
-	rc_table_begin(&table, out.fp, t.json);
+	tool_table_begin(&t, &table, out.fp);
 	rc_row_init(&row);
 	rc_contact_defaults(&co);
 	co.alpha = o.alpha;
@@ -584,8 +585,17 @@ main(int argc, char **argv)
 				tool_write_grid(&t, g, o.field[GFMD_CONTACT]);
 			if (t.png != NULL) {
 				rc_png_opts po;
+				char caption[96];
+				size_t n_c = 0;
+
+				for (size_t k = 0; k < np; k++)
+					n_c += mask[k] != 0;
+				/* The last pressure's, as in its row (a_r = n_c/n_tot). */
+				snprintf(caption, sizeof(caption), "p*=%.4g  a_r=%.4g",
+				    last_p_star, (double)n_c / (double)np);
 				rc_png_defaults(&po);
 				po.overlay = g;
+				po.caption = caption;
 				if (rc_png_write(h, t.png, &po, &err) != 0)
 					tool_fail(&t, "%s: %s", t.png, err.msg);
 			}

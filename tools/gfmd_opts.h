@@ -43,6 +43,7 @@ enum {
 	{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY }, \
 	{ "resume", required_argument, NULL, OPT_RESUME }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
+	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
 	{ "version", no_argument, NULL, OPT_VERSION }, \
 	{ "help", no_argument, NULL, 'h' }

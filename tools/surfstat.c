@@ -50,6 +50,7 @@ usage(void)
 	    "                        estimate, or measure for big grids with --wisdom)\n"
 	    "  --wisdom FILE         load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 	    "  -o FILE               table output (default stdout)   --json  JSON\n"
+	    "  --pretty              aligned, rounded table (default on a terminal)\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
@@ -58,6 +59,7 @@ static const struct option longopts[] = {
 	{ "help", no_argument, NULL, 'h' },
 	{ "version", no_argument, NULL, OPT_VERSION },
 	{ "json", no_argument, NULL, OPT_JSON },
+	{ "pretty", no_argument, NULL, OPT_PRETTY },
 	{ "png", required_argument, NULL, OPT_PNG },
 	TOOL_FFT_LONGOPTS,
 	{ "mask", required_argument, NULL, OPT_MASK },
@@ -83,7 +85,7 @@ out_open(const struct tool *t, struct out *o)
 
 	if (rc_atomic_open(&o->file, t->out, &err) != 0)
 		tool_fail(t, "%s: %s", t->out, err.msg);
-	rc_table_begin(&o->table, o->file.fp, t->json);
+	tool_table_begin(t, &o->table, o->file.fp);
 }
 
 static void

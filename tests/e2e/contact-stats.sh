@@ -200,6 +200,22 @@ check "schedule --json" test "$(contact-stats --schedule --json --eps-ref 1 --p-
 check_status "--gnuplot" 0 contact-stats --gnuplot k.gp -o /dev/null a.tsv h3.tsv
 check "script plots kappa with error bars" grep -q "yerrorlines" k.gp
 check "one curve per H" test "$(grep -c '^\$curve[0-9]* << EOD' k.gp)" = 2
+# a.tsv has p* 0.05 and 0.1 (h3.tsv 0.05): a labelled tick at each
+check "every p* tick labelled: at the two pressures" \
+    grep -qx "set xtics ('0.05' 0.05, '0.1' 0.1)" k.gp
+contact-stats --gnuplot k1.gp -o /dev/null h3.tsv
+check "one pressure: one labelled tick (none before)" grep -qx "set xtics ('0.05' 0.05)" k1.gp
+rows 1 64,128 0.001,0.002,0.003,0.005,0.01,0.02,0.03,0.05,0.1,0.2,0.3 >many.tsv
+contact-stats --gnuplot km.gp -o /dev/null many.tsv
+check "many pressures: labelled ticks at 1, 2, 5 x 10^k in the range" \
+    grep -qx "set xtics ('0.001' 0.001, '0.002' 0.002, '0.005' 0.005, '0.01' 0.01, '0.02' 0.02, '0.05' 0.05, '0.1' 0.1, '0.2' 0.2)" km.gp
+persson=$(grep "title 'Persson" k.gp | grep -o "lc rgb '#[0-9a-f]*'")
+bgt=$(grep "title 'BGT" k.gp | grep -o "lc rgb '#[0-9a-f]*'")
+check "Persson and BGT lines in distinct colours ($persson, $bgt)" \
+    [ -n "$persson" ] && [ -n "$bgt" ] && [ "$persson" != "$bgt" ]
+check "data curves in neither reference colour" \
+    sh -c "! grep yerrorlines k.gp | grep -q -e \"$persson\" -e \"$bgt\""
+check "legend above the plot, not beside it" grep -qx "set key above horizontal samplen 2" k.gp
 if command -v gnuplot >/dev/null 2>&1; then
 	gnuplot k.gp 2>/dev/null
 	check "gnuplot makes a PNG" test "$(od -An -tx1 -N4 k.png 2>/dev/null | tr -d ' ')" = 89504e47

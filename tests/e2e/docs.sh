@@ -14,6 +14,20 @@ awk '/^## A pipeline/ { on = 1; next } on && /^## / { exit } on && /^    / { sub
     "$RC_TOP/README.md" > pipeline.sh
 check "README pipeline has 5 lines" [ "$(wc -l < pipeline.sh)" -eq 5 ]
 check "README pipeline runs" sh -e pipeline.sh > pipeline.out 2>&1
+# ...for a newcomer whose PATH has no tools: the README says, before the
+# pipeline, how to put them there; run its export line from a tree whose
+# bin/ holds the tools under test, with a PATH that has none of them.
+export_line=$(awk '/^## A pipeline/ { on = 1; next } on && /^    / { exit }
+    on' "$RC_TOP/README.md" | grep -o 'export PATH="[^`]*"')
+check "README says how the tools get on PATH before the pipeline" [ -n "$export_line" ]
+check "README mentions make install PREFIX= before the pipeline" \
+    sh -c "awk '/^## A pipeline/ { on = 1; next } on && /^    / { exit } on' '$RC_TOP/README.md' | grep -q 'make install PREFIX='"
+mkdir -p newcomer && ln -s "$RC_BIN" newcomer/bin
+check "README pipeline runs after its export line, PATH without the tools" \
+    sh -c "cd newcomer && PATH=/usr/bin:/bin && $export_line && sh -e ../pipeline.sh" \
+    > pipeline2.out 2>&1
+check "without it the pipeline fails (command not found)" \
+    sh -c "cd newcomer && ! PATH=/usr/bin:/bin sh -e ../pipeline.sh" > /dev/null 2>&1
 
 # Every option --help lists is in the manual page, and every option the
 # page describes (.It Fl) is in --help: the two are written together.
@@ -42,4 +56,36 @@ for pair in gfmd-solve:r32.tsv surfstat:st.tsv contact-stats:cs.tsv; do
 	    while read -r c; do grep -q -w -- "$c" "$RC_TOP/man/man1/$t.1" || printf '%s ' "$c"; done)
 	check "$t: every output column is in $t(1) (missing: ${missing:-none})" [ -z "$missing" ]
 done
+# One citation of the paper everywhere: every reference block to it in the
+# manual pages is the same (authors, title, journal, volume, page, year),
+# and README and studies/README give the same title.
+M=$RC_TOP/man
+for f in "$M"/man*/*.[157]; do
+	awk '/^\.Rs/ { b = ""; on = 1 } on { b = b $0 "\n" } /^\.Re/ && on { on = 0; if (b ~ /Wang/) printf "%s", b }' "$f"
+done | awk '/^\.Rs/ { n++ } { blk[n] = blk[n] $0 "\n" } END { for (i = 2; i <= n; i++) if (blk[i] != blk[1]) bad++; print n, bad + 0 }' > cite.txt
+read -r ncite nbad < cite.txt
+check "the paper's reference blocks in the man pages are identical ($ncite blocks, $nbad differ)" [ "$ncite" -ge 6 ] && [ "$nbad" -eq 0 ]
+title='Effect of Structural Parameters on the Relative Contact Area for Ideal, Anisotropic, and Correlated Random Roughness'
+check "the man pages' title is the paper's" grep -q "^\.%T $title\$" "$M/man1/surfgen.1"
+check "no other spelling of the first author (L. Wang, Anle Wang)" \
+    sh -c "! grep -rq -e '%A L\. Wang' -e 'Anle Wang' '$M'"
+check "no other title (On the Structural Parameters ...)" \
+    sh -c "! grep -rqi 'On the Structural Parameters Controlling' '$M' '$RC_TOP/README.md'"
+for f in README.md studies/README.md; do
+	check "$f cites the same title" \
+	    sh -c "tr '\n' ' ' < '$RC_TOP/$f' | tr -d '*>' | tr -s ' ' | grep -q '$title'"
+done
+check "gfmd-solve(1): FIRE-GFMD is Zhou, Moseler, Mueser, Phys. Rev. B 99, 144103 (2019)" \
+    sh -c "awk '/^\.Rs/ { b = \"\" } { b = b \$0 \"|\" } /^\.Re/ && b ~ /Moseler/ { print b }' '$M/man1/gfmd-solve.1' |
+	grep -q '%A Y. Zhou|.%A M. Moseler|.%A M. H. M.*%J Phys. Rev. B|.%V 99|.%P 144103|.%D 2019'"
+# One date on all pages; no up-arrows for superscripts.
+check "one .Dd date on every page ($(cat "$M"/man*/*.[157] | grep '^\.Dd' | sort -u | tr '\n' ' '))" \
+    [ "$(cat "$M"/man*/*.[157] | grep '^\.Dd' | sort -u | wc -l)" -eq 1 ]
+check "no \\(ua (an arrow) used as a superscript" sh -c "! grep -q '\\\\(ua' '$M'/man*/*.[157]"
+# One memory figure for gfmd-solve: README, gfmd-solve(1), roughcontact(7).
+readme_b=$(tr '\n' ' ' < "$RC_TOP/README.md" | grep -o 'gfmd-solve needs [0-9–-]* bytes per' | grep -o '[0-9–-]*[0-9]')
+man1_b=$(tr '\n' ' ' < "$M/man1/gfmd-solve.1" | grep -o 'Memory is about [0-9]* bytes per' | grep -o '[0-9][0-9]*')
+man7_b=$(grep '^\.It gfmd-solve (FIRE or CG) Ta' "$M/man7/roughcontact.7" | grep -o '[0-9][0-9]*$')
+check "gfmd-solve's bytes per point agree (README $readme_b, gfmd-solve(1) $man1_b, roughcontact(7) $man7_b)" \
+    [ -n "$readme_b" ] && [ "$readme_b" = "$man1_b" ] && [ "$man1_b" = "$man7_b" ]
 summary

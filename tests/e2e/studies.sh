@@ -14,6 +14,7 @@ pick() { awk -F'\t' -v k="$3" -v v="$4" -v c="$2" 'NR == 1 { for (i = 1; i <= NF
 H=harmonic
 make -s -j2 -C "$S/$H" BIN="$RC_BIN" OUT="$T_TMP/$H" N=64 PRESSURES="0.02 0.1" >"$T_TMP/h.log" 2>&1
 check "harmonic: make runs" test -s "$T_TMP/$H/harmonic.png"
+check "harmonic: the key names Eq. 28's curves" grep -q 'title "Eq. 28' "$S/$H/harmonic.gp"
 check_status "harmonic: second make has nothing to do" 0 make -q -C "$S/$H" BIN="$RC_BIN" OUT="$T_TMP/$H" N=64 PRESSURES="0.02 0.1"
 for p in 0.02 0.1; do
 	k15=$(awk -F'\t' -v p=$p '$1 == 1.5 && $2 == p { print $4 }' "$T_TMP/$H/harmonic.tsv")

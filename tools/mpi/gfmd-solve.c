@@ -30,8 +30,8 @@ usage(void)
 "           [-E MODULUS] [--method fire] [--tol TOL] [--max-iter N]\n"
 "           [--alpha A] [--init FILE.surf] [--contact FILE.surf]\n"
 "           [--gap FILE.surf] [--pressure FILE.surf]\n"
-"           [--displacement FILE.surf] [-o FILE] [--json] [-j N] [-q]\n"
-"           FILE.surf\n"
+"           [--displacement FILE.surf] [-o FILE] [--json] [--pretty]\n"
+"           [-j N] [-q] FILE.surf\n"
 "The MPI build of gfmd-solve(1): the same rows, solved on all ranks with\n"
 "FIRE-GFMD; input and fields are .surf files read and written with MPI-IO.\n"
 "Not in this build: --method cg, --fd, --png, --checkpoint,\n"
@@ -173,7 +173,7 @@ main(int argc, char **argv)
 	if (rank == 0 && rc_atomic_open(&out, t.out, &err) != 0)
 		fail0(&t, &out, t.out, err.msg);
 	if (rank == 0)
-		rc_table_begin(&table, out.fp, t.json);
+		tool_table_begin(&t, &table, out.fp);
 	rc_row_init(&row);
 	for (size_t k = 0; k < npressures; k++) {
 		rc_solve_result res;
