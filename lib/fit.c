@@ -112,31 +112,37 @@ hinge_df(const gsl_vector *p, void *data, gsl_matrix *jac)
 /* Linear fit y = a + b t, t = -max(0, x - xh) (a line if xh <= x[0]):
  * returns the residual sum of squares; a, b and their covariance. */
 static double
-line_fit(const double *x, const double *y, size_t n, double xh, double *c,
-    double cov[2][2])
+line_fit(const double *x, const double *y, const double *wt, size_t n,
+    double xh, double *c, double cov[2][2])
 {
 	gsl_matrix *X = gsl_matrix_alloc(n, 2), *cv = gsl_matrix_alloc(2, 2);
 	gsl_vector *yy = gsl_vector_alloc(n), *cc = gsl_vector_alloc(2);
+	gsl_vector *ww = gsl_vector_alloc(n);
 	gsl_multifit_linear_workspace *w = gsl_multifit_linear_alloc(n, 2);
 	double chisq = INFINITY;
 
-	if (X && cv && yy && cc && w) {
+	if (X && cv && yy && cc && ww && w) {
 		for (size_t k = 0; k < n; k++) {
 			gsl_matrix_set(X, k, 0, 1);
 			gsl_matrix_set(X, k, 1, -fmax(0, x[k] - xh));
 			gsl_vector_set(yy, k, y[k]);
+			gsl_vector_set(ww, k, wt[k]);
 		}
-		if (gsl_multifit_linear(X, yy, cc, cv, &chisq, w) != 0)
+		if (gsl_multifit_wlinear(X, ww, yy, cc, cv, &chisq, w) != 0)
 			chisq = INFINITY;
 		else {
 			c[0] = gsl_vector_get(cc, 0);
 			c[1] = gsl_vector_get(cc, 1);
+			/* the weights fix only relative variances: scale by
+			 * the residual variance */
 			if (cov != NULL)
 				for (int i = 0; i < 2; i++)
 					for (int j = 0; j < 2; j++)
-						cov[i][j] = gsl_matrix_get(cv, i, j);
+						cov[i][j] = gsl_matrix_get(cv, i, j) *
+						    chisq / (double)(n - 2);
 		}
 	}
+	gsl_vector_free(ww);
 	gsl_matrix_free(X);
 	gsl_matrix_free(cv);
 	gsl_vector_free(yy);
@@ -147,14 +153,15 @@ line_fit(const double *x, const double *y, size_t n, double xh, double *c,
 
 /* Refine the hinge; cov 3x3 scaled by the residual variance. */
 static int
-hinge_refine(const double *x, const double *y, size_t n, double p0[3],
-    double cov[3][3], double *chisq)
+hinge_refine(const double *x, const double *y, const double *wt, size_t n,
+    double p0[3], double cov[3][3], double *chisq)
 {
 	gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
 	gsl_multifit_nlinear_workspace *w;
 	gsl_multifit_nlinear_fdf fdf;
 	struct hinge_data d = { x, y, n };
 	gsl_vector_view pv = gsl_vector_view_array(p0, 3);
+	gsl_vector_const_view wv = gsl_vector_const_view_array(wt, n);
 	gsl_matrix *cv = gsl_matrix_alloc(3, 3);
 	int info, rc = -1;
 
@@ -167,7 +174,7 @@ hinge_refine(const double *x, const double *y, size_t n, double p0[3],
 	w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fp, n, 3);
 	if (w == NULL || cv == NULL)
 		goto out;
-	if (gsl_multifit_nlinear_init(&pv.vector, &fdf, w) != 0 ||
+	if (gsl_multifit_nlinear_winit(&pv.vector, &wv.vector, &fdf, w) != 0 ||
 	    gsl_multifit_nlinear_driver(200, 1e-12, 1e-12, 1e-12, NULL, NULL,
 	    &info, w) != 0)
 		goto out;
@@ -194,7 +201,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 	rc_grid *s2d = NULL;
 	rc_psd_bin *b = NULL;
 	size_t nb = 0, n = 0;
-	double *x = NULL, *y = NULL, qa, qb, cmax = 0, widen;
+	double wsum = 0, *x = NULL, *y = NULL, *wt = NULL, qa, qb, cmax = 0, widen;
 	struct edges e;
 	int rc = -1;
 
@@ -207,6 +214,11 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 		return -1;
 	qa = o->q_min > 0 ? o->q_min : 0;
 	qb = o->q_max > 0 ? o->q_max : INFINITY;
+	/* A finite patch: wavelengths of fewer than 4 spacings are left out
+	 * unless the caller says otherwise (the window's leakage and most
+	 * instruments' transfer functions make them unreliable). */
+	if (o->q_max == 0 && !g->periodic)
+		qb = M_PI / (2 * fmax(g->lx / (double)g->nx, g->ly / (double)g->ny));
 	find_edges(s2d, qa, qb, &e);
 	rc_grid_free(s2d);
 	if (!(e.hi_power > 0)) {
@@ -217,7 +229,8 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 	    err) != 0)
 		goto out;
 	if ((x = rc_malloc(nb * sizeof(double), err)) == NULL ||
-	    (y = rc_malloc(nb * sizeof(double), err)) == NULL)
+	    (y = rc_malloc(nb * sizeof(double), err)) == NULL ||
+	    (wt = rc_malloc(nb * sizeof(double), err)) == NULL)
 		goto out;
 	for (size_t k = 0; k < nb; k++)
 		cmax = fmax(cmax, b[k].c);
@@ -233,6 +246,8 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 			continue;
 		x[n] = log(q);
 		y[n] = log(b[k].c);
+		/* var(ln C) of a bin ~ 1 / (its independent modes) */
+		wt[n] = (double)b[k].n_modes;
 		n++;
 	}
 	if (n < 4) {
@@ -241,6 +256,8 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 		goto out;
 	}
 	fit->n_bins = n;
+	for (size_t k = 0; k < n; k++)
+		wsum += wt[k];
 	fit->fit_q_min = exp(x[0]);
 	fit->fit_q_max = exp(x[n - 1]);
 	{
@@ -248,7 +265,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 		double chisq;
 		int plateau = 0;
 
-		sse_pow = line_fit(x, y, n, x[0], c, cov);
+		sse_pow = line_fit(x, y, wt, n, x[0], c, cov);
 		if (!e.lo_cut)
 			for (int s = 1; s < HINGE_STEPS; s++) {
 				double xh = x[0] + (x[n - 1] - x[0]) * s / HINGE_STEPS, hc[2];
@@ -258,7 +275,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 					below += x[k] <= xh;
 				if (below < 2 || n - below < 2)
 					continue;
-				sse = line_fit(x, y, n, xh, hc, NULL);
+				sse = line_fit(x, y, wt, n, xh, hc, NULL);
 				if (sse < best) {
 					best = sse;
 					bx = xh;
@@ -269,7 +286,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 		if (isfinite(best) && best < 0.5 * sse_pow) {
 			double p[3] = { bc[0], bc[1] / 2 - 1, bx }, cv[3][3];
 			size_t below = 0;
-			if (hinge_refine(x, y, n, p, cv, &chisq) == 0) {
+			if (hinge_refine(x, y, wt, n, p, cv, &chisq) == 0) {
 				for (size_t k = 0; k < n; k++)
 					below += x[k] <= p[2];
 				if (below >= 2 && n - below >= 2) {
@@ -281,7 +298,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 					fit->q_r_err = fit->q_r * sqrt(cv[2][2]);
 					fit->rolloff = 1;
 					fit->q_r_from = "fit";
-					fit->rms_residual = sqrt(chisq / (double)n);
+					fit->rms_residual = sqrt(chisq / wsum);
 					/* hrms error from ln C_r, H, ln q_r */
 					{
 						double pp[3] = { p[0], p[1], p[2] }, gr[3], v = 0;
@@ -307,7 +324,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 			    log(e.lo_power);
 			double lc[2], lcov[2][2];
 			/* y = a - slope (x - x0) on every bin (all lie above x0) */
-			sse_pow = line_fit(x, y, n, x0, lc, lcov);
+			sse_pow = line_fit(x, y, wt, n, x0, lc, lcov);
 			if (!isfinite(sse_pow)) {
 				rc_seterr(err, "the power-law fit failed");
 				goto out;
@@ -319,7 +336,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 			fit->q_r_err = e.lo_cut ? 0.5 * (e.lo_power - e.lo_empty) : NAN;
 			fit->q_r_from = e.lo_cut ? "cutoff" : "range";
 			fit->rolloff = 0;
-			fit->rms_residual = sqrt(sse_pow / (double)n);
+			fit->rms_residual = sqrt(sse_pow / wsum);
 			{
 				double pp[2] = { lc[0], fit->H }, gr[2], v = 0;
 				double h0 = rc_fit_model_hrms(exp(pp[0]), pp[1], fit->q_r,
@@ -347,5 +364,86 @@ out:
 	free(b);
 	free(x);
 	free(y);
+	free(wt);
 	return rc;
+}
+
+/* Field k (0-based) of a tab-separated line, into buf. */
+static int
+field(const char *line, size_t k, char *buf, size_t len)
+{
+	for (size_t i = 0; i < k; i++) {
+		line = strchr(line, '\t');
+		if (line == NULL)
+			return -1;
+		line++;
+	}
+	{
+		size_t n = strcspn(line, "\t\n");
+		if (n >= len)
+			return -1;
+		memcpy(buf, line, n);
+		buf[n] = '\0';
+	}
+	return 0;
+}
+
+int
+rc_fit_table_parse(const char *text, rc_fit *fit, size_t *nx, size_t *ny,
+    double *lx, double *ly, rc_err *err)
+{
+	static const char *need[] = { "nx", "ny", "lx", "ly", "H", "q_r", "q_s",
+	    "hrms", "rolloff" };
+	double v[9];
+	const char *row = strchr(text, '\n');
+	size_t hlen = row ? (size_t)(row - text) : strlen(text), ncol = 1;
+	char name[64], val[64];
+
+	memset(fit, 0, sizeof(*fit));
+	{
+		/* a fit table names lambda_r in its header line */
+		char *head = strndup(text, hlen);
+		int is_table = head != NULL && strstr(head, "\tlambda_r\t") != NULL;
+		free(head);
+		if (!is_table)
+			return 0;
+	}
+	if (row == NULL || row[1] == '\0')
+		return rc_seterr(err, "fit table without a data row");
+	row++;
+	for (size_t i = 0; i < hlen; i++)
+		ncol += text[i] == '\t';
+	for (size_t k = 0; k < 9; k++) {
+		size_t c;
+		char *end;
+		for (c = 0; c < ncol; c++)
+			if (field(text, c, name, sizeof(name)) == 0 &&
+			    strcmp(name, need[k]) == 0)
+				break;
+		if (c == ncol)
+			return rc_seterr(err, "fit table lacks the column %s", need[k]);
+		if (field(row, c, val, sizeof(val)) != 0)
+			return rc_seterr(err, "fit table: no value for %s", need[k]);
+		v[k] = strtod(val, &end);
+		if (end == val || *end != '\0' || !isfinite(v[k]))
+			return rc_seterr(err, "fit table: %s = '%s' is not a finite number",
+			    need[k], val);
+	}
+	if (!(v[0] >= 1 && v[0] <= RC_GRID_MAX_DIM && v[1] >= 1 &&
+	    v[1] <= RC_GRID_MAX_DIM && v[0] == floor(v[0]) && v[1] == floor(v[1])))
+		return rc_seterr(err, "fit table: nx, ny must be positive integers");
+	if (!(v[2] > 0 && v[3] > 0 && v[5] > 0 && v[6] > v[5] && v[7] > 0) ||
+	    (v[8] != 0 && v[8] != 1))
+		return rc_seterr(err, "fit table: need lx, ly, q_r, hrms > 0, "
+		    "q_s > q_r, rolloff 0 or 1");
+	*nx = (size_t)v[0];
+	*ny = (size_t)v[1];
+	*lx = v[2];
+	*ly = v[3];
+	fit->H = v[4];
+	fit->q_r = v[5];
+	fit->q_s = v[6];
+	fit->hrms = v[7];
+	fit->rolloff = (int)v[8];
+	return 1;
 }

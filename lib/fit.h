@@ -29,15 +29,21 @@
  *    line (gsl_multifit_linear) gives ln C_r and H, with q_r from the low
  *    cutoff, or, if there is none, the lowest q of the range (q_r_from =
  *    range, rolloff = 0: the roll-off lies below what was measured).
- *    Standard errors are the covariance of the fit scaled by the residual
- *    variance (the bins are treated as equally uncertain in ln C); hrms's
- *    by propagation through the formula above.
+ *    Every bin is weighted by its number of modes (the variance of ln C
+ *    of a bin of independent modes falls as 1/modes).  Standard errors
+ *    are the covariance of the fit scaled by the residual variance;
+ *    hrms's by propagation through the formula above.
  * Short wavelengths measured by a scanning probe are often unreliable
  * (tip convolution, noise): q_max = 2 pi / (the shortest reliable
- * wavelength) excludes them; see surfstat(1).
+ * wavelength) excludes them; see surfstat(1).  On a finite patch q_max
+ * defaults to pi / (2 max(dx, dy)), wavelengths of 4 spacings and more
+ * (the window's leakage, and the transfer function of most instruments,
+ * make the last octave unreliable); on a periodic grid to no bound.
  */
 #ifndef RC_FIT_H
 #define RC_FIT_H
+/* (surfgen --like turns a fit into surfgen's parameters: H, lambda_r =
+ * 2 pi / q_r, lambda_s = 2 pi / q_s, rolloff and rms height hrms.) */
 
 #include <stddef.h>
 #include "fft.h"
@@ -45,7 +51,7 @@
 #include "psd.h"
 
 typedef struct rc_fit_opts {
-	double q_min, q_max;	/* fit range; 0 = no bound */
+	double q_min, q_max;	/* fit range; 0 = the default (below) */
 	double bins_per_decade;	/* radial bins (default 10) */
 	enum rc_window window;	/* RC_WINDOW_AUTO as surfstat --psd */
 } rc_fit_opts;
@@ -60,7 +66,7 @@ typedef struct rc_fit {
 	const char *q_r_from, *q_s_from;	/* "fit", "cutoff", "range" */
 	double fit_q_min, fit_q_max;	/* the bins used */
 	size_t n_bins;
-	double rms_residual;	/* of ln C */
+	double rms_residual;	/* of ln C, weighted by the bins' modes */
 } rc_fit;
 
 void rc_fit_opts_default(rc_fit_opts *o);
@@ -71,3 +77,11 @@ double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
     int rolloff);
 
 #endif
+
+/* A fit as surfstat --fit writes it (TSV: a header line, one row), read
+ * back: the columns nx ny lx ly H q_r q_s hrms rolloff are required.
+ * Returns 1 and fills fit, nx, ny, lx, ly if the text is such a table; 0
+ * if it is not one (no lambda_r column in the first line: something
+ * else, e.g. a grid); -1 with err set if it is one but broken. */
+int rc_fit_table_parse(const char *text, rc_fit *fit, size_t *nx, size_t *ny,
+    double *lx, double *ly, rc_err *err);
