@@ -321,8 +321,16 @@ main(int argc, char **argv)
 	rc_fft_set_threads(t.threads);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
 	g = tool_read_grid(&t, in);
-	for (size_t k = 0; k < nsteps; k++)
+	for (size_t k = 0; k < nsteps; k++) {
 		g = apply(&t, g, &steps[k], filled_mask);
+		/* Levelling, cropping and resampling change the heights'
+		 * statistics: the generation target no longer holds. */
+		if (steps[k].op != OPT_TRANSPOSE && steps[k].op != OPT_FILL &&
+		    !(steps[k].op == OPT_DETREND && steps[k].mode == RC_DETREND_MEAN)) {
+			rc_grid_meta_unset(g, "rms_gradient");
+			rc_grid_meta_unset(g, "rms_height");
+		}
+	}
 	if (g->valid != NULL && (have_w || flip || carve_mask != NULL || rmsg > 0))
 		tool_fail(&t, "%s: the grid has missing points; -w, --flip, --carve "
 		    "and --rms-gradient need every point (add --fill first)",
