@@ -340,6 +340,38 @@ test_iso(void)
 	rc_grid_free(g);
 }
 
+/* Str of a Peklenik surface: C depends on (g qx, qy / g), so the surface
+ * is an isotropic one stretched by g along x and 1/g along y, its
+ * autocorrelation likewise: the slowest decay distance is g^2 times the
+ * fastest, Str = 1/g^2.  With exact amplitudes (sqrt C) the ACF is the
+ * transform of C itself, not a random estimate; what remains is the
+ * lattice of modes and the band edges: 10%. */
+static void
+test_str(void)
+{
+	rc_synth_params p;
+	rc_err err;
+	rc_grid *g;
+	rc_iso iso;
+
+	rc_synth_defaults(&p);
+	p.nx = p.ny = 256;
+	p.hurst = 0.8;
+	p.lambda_r = 0.1;
+	p.lambda_s = 0.02;
+	p.rolloff = 1;
+	p.peklenik = 1.5;
+	g = rc_synth(&p, &err);
+	test_int(rc_iso25178(g, 0.2, &iso, &err), 0, "iso on a Peklenik surface");
+	test_rel(iso.Str, 1 / (1.5 * 1.5), 0.1, "Str = 1/g^2 for Peklenik g = 1.5");
+	rc_grid_free(g);
+	p.peklenik = 1;
+	g = rc_synth(&p, &err);
+	rc_iso25178(g, 0.2, &iso, &err);
+	test_range(iso.Str, 0.9, 1, "Str ~ 1 for an isotropic surface");
+	rc_grid_free(g);
+}
+
 /* sum C dq^2 = <h^2> for white noise with each window (expectation);
  * a periodic grid's spectrum unchanged by AUTO. */
 static void
@@ -592,6 +624,7 @@ main(void)
 	test_fill();
 	test_crop_transpose_resample();
 	test_iso();
+	test_str();
 	test_window();
 	test_tilt();
 	test_psd1d();
