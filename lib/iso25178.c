@@ -239,7 +239,7 @@ rc_iso25178(const rc_grid *g, double s, rc_iso *iso, rc_err *err)
 	iso->Ssk = iso->Sq > 0 ? s3 / (double)n / pow(iso->Sq, 3) : NAN;
 	iso->Sku = iso->Sq > 0 ? s4 / (double)n / pow(iso->Sq, 4) : NAN;
 	iso->Sp = z[0];
-	iso->Sv = -z[n - 1];
+	iso->Sv = 0 - z[n - 1] + 0.0;	/* never -0 */
 	iso->Sz = iso->Sp + iso->Sv;
 	core(z, n, iso);
 	free(z);

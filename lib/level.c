@@ -51,11 +51,38 @@ is_valid(const rc_grid *g, size_t k)
  * divided by the cell size (so every column is of order one and the least
  * squares problem is well conditioned). */
 static void
-basis(double u, double v, size_t p, double *row)
+basis(double u, double v, const int *cols, size_t p, double *row)
 {
 	double b[6] = { 1, u, v, u * u, u * v, v * v };
 
-	memcpy(row, b, p * sizeof(double));
+	for (size_t m = 0; m < p; m++)
+		row[m] = b[cols[m]];
+}
+
+/* The columns of the model (indices into 1, u, v, u^2, uv, v^2); an
+ * axis of one point has no slope or curvature to fit. */
+static size_t
+model_columns(const rc_grid *g, enum rc_detrend kind, int *cols)
+{
+	static const int deg[6] = { 0, 1, 1, 2, 2, 2 };
+	static const int usex[6] = { 0, 1, 0, 1, 1, 0 };
+	static const int usey[6] = { 0, 0, 1, 0, 1, 1 };
+	int maxdeg = kind == RC_DETREND_MEAN ? 0 : kind == RC_DETREND_PLANE ? 1 : 2;
+	size_t p = 0;
+
+	for (int m = 0; m < 6; m++)
+		if (deg[m] <= maxdeg && !(usex[m] && g->nx < 2) && !(usey[m] && g->ny < 2))
+			cols[p++] = m;
+	return p;
+}
+
+static int
+all_finite(const gsl_vector *c)
+{
+	for (size_t m = 0; m < c->size; m++)
+		if (!isfinite(gsl_vector_get(c, m)))
+			return 0;
+	return 1;
 }
 
 /* Rows of the design matrix go to GSL's large least-squares solver
@@ -66,7 +93,8 @@ basis(double u, double v, size_t p, double *row)
 int
 rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err)
 {
-	size_t p = kind == RC_DETREND_MEAN ? 1 : kind == RC_DETREND_PLANE ? 3 : 6;
+	int cols[6];
+	size_t p = model_columns(g, kind, cols);
 	size_t nx = g->nx, ny = g->ny, n = nx * ny, nvalid = 0, fill = 0;
 	double dx = g->lx / (double)nx, dy = g->ly / (double)ny;
 	double xc = 0.5 * (double)(nx - 1) * dx, yc = 0.5 * (double)(ny - 1) * dy;
@@ -95,7 +123,7 @@ rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err)
 		if (k < n && is_valid(g, k)) {
 			double u = ((double)(k % nx) * dx - xc) / g->lx;
 			double v = ((double)(k / nx) * dy - yc) / g->ly;
-			basis(u, v, p, gsl_matrix_ptr(x, fill, 0));
+			basis(u, v, cols, p, gsl_matrix_ptr(x, fill, 0));
 			gsl_vector_set(y, fill, g->z[k]);
 			fill++;
 		}
@@ -109,7 +137,8 @@ rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err)
 			fill = 0;
 		}
 	}
-	if (gsl_multilarge_linear_solve(0.0, c, &rnorm, &snorm, w) != 0) {
+	if (gsl_multilarge_linear_solve(0.0, c, &rnorm, &snorm, w) != 0 ||
+	    !all_finite(c)) {
 		rc_seterr(err, "detrend %s: singular fit (the valid points are "
 		    "collinear or too few)", rc_detrend_name(kind));
 		goto out;
@@ -124,18 +153,22 @@ rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err)
 				continue;
 			u = ((double)((size_t)k % nx) * dx - xc) / g->lx;
 			v = ((double)((size_t)k / nx) * dy - yc) / g->ly;
-			basis(u, v, p, row);
+			basis(u, v, cols, p, row);
 			for (size_t m = 0; m < p; m++)
 				f += row[m] * cc[m];
 			g->z[k] -= f;
 		}
 	}
 	if (coef != NULL) {
-		/* Back to x - xc, y - yc in the grid's length unit. */
+		/* Back to x - xc, y - yc in the grid's length unit; terms of
+		 * an axis of one point are 0. */
 		double s[6] = { 1, 1 / g->lx, 1 / g->ly, 1 / (g->lx * g->lx),
 		    1 / (g->lx * g->ly), 1 / (g->ly * g->ly) };
+		size_t full = kind == RC_DETREND_MEAN ? 1 : kind == RC_DETREND_PLANE ? 3 : 6;
+		for (size_t m = 0; m < full; m++)
+			coef[m] = 0;
 		for (size_t m = 0; m < p; m++)
-			coef[m] = gsl_vector_get(c, m) * s[m];
+			coef[cols[m]] = gsl_vector_get(c, m) * s[cols[m]];
 	}
 	if (kind != RC_DETREND_MEAN)
 		g->periodic = 0;

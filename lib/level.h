@@ -10,7 +10,8 @@
  *   mean:      z ~ a0
  *   plane:     z ~ a0 + a1 x + a2 y
  *   quadratic: z ~ a0 + a1 x + a2 y + a3 x^2 + a4 x y + a5 y^2
- * and subtracts the fit.  Removing a plane or a quadric from one period of
+ * and subtracts the fit (an axis of one point, a profile's, has no x or y
+ * terms).  Removing a plane or a quadric from one period of
  * a periodic surface breaks its periodicity, so both set g->periodic = 0;
  * removing the mean keeps it.
  *
@@ -46,7 +47,9 @@ int rc_align_parse(const char *name);
 const char *rc_align_name(enum rc_align a);
 
 /* Subtract the least-squares fit; coef (may be NULL) gets the 1, 3 or 6
- * coefficients a0 .. a5 of the fit, in the units of z and x, y. */
+ * coefficients a0 .. a5 of the fit in x - xc, y - yc (xc, yc the centre
+ * of the points, (nx - 1) dx / 2 and (ny - 1) dy / 2), in the units of z
+ * and x, y. */
 int rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err);
 /* Align every row; rows without a valid point are left alone. */
 int rc_align_rows(rc_grid *g, enum rc_align kind, rc_err *err);

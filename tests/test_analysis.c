@@ -117,6 +117,19 @@ test_detrend(void)
 	test_abs(coef[3], 0.3, 1e-10, "quadric x^2 coefficient");
 	rc_grid_free(g);
 
+	/* a profile: no y terms to fit (they would make the fit singular) */
+	g = new_grid(50, 1, 5, 0.1);
+	for (size_t k = 0; k < 50; k++)
+		g->z[k] = 2 - 0.3 * (double)k * 0.1 + 0.01 * (double)(k * k) * 0.01;
+	test_int(rc_detrend(g, RC_DETREND_QUADRATIC, coef, &err), 0,
+	    "detrend quadratic on a profile");
+	maxabs = 0;
+	for (size_t k = 0; k < 50; k++)
+		maxabs = fmax(maxabs, fabs(g->z[k]));
+	test_abs(maxabs, 0, 1e-12, "profile quadratic removed to round-off");
+	test_true(coef[2] == 0 && coef[4] == 0 && coef[5] == 0, "no y terms for a profile");
+	rc_grid_free(g);
+
 	/* mean keeps periodicity */
 	g = new_grid(8, 8, 1, 1);
 	for (size_t k = 0; k < 64; k++)
