@@ -99,4 +99,13 @@ check_status "--min-wavelength without --fit" 2 surfstat --min-wavelength 0.1 s.
 check_status "two tables" 2 surfstat --iso --fit s.surf
 check_status "--like with -H" 2 surfgen --like fit.tsv -H 0.5
 check_status "--like a missing file" 1 surfgen --like nothere.tsv
+# A broken fit table: refused with the column named, nothing written.
+sed '2s/^\([^	]*	[^	]*	[^	]*	[^	]*	\)[^	]*/\1abc/' fit.tsv > badfit.tsv
+surfgen --like badfit.tsv -o bad.surf 2>bad.err
+check_rel "--like a fit table with H = abc: exit 1" $? 1 0
+check "the message names H" grep -q "H = 'abc'" bad.err
+check "nothing written" [ ! -e bad.surf ]
+head -n 1 fit.tsv > header-only.tsv
+check_status "--like a fit table without a row" 1 surfgen --like header-only.tsv
+check_status "--fit of a profile" 1 surfstat --fit -L 1x1 prof.txt
 summary
