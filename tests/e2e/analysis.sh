@@ -108,4 +108,9 @@ check "nothing written" [ ! -e bad.surf ]
 head -n 1 fit.tsv > header-only.tsv
 check_status "--like a fit table without a row" 1 surfgen --like header-only.tsv
 check_status "--fit of a profile" 1 surfstat --fit -L 1x1 prof.txt
+# The header key: only 0 or 1.
+LC_ALL=C sed 's/^periodic = 0$/periodic = 2/' d.surf > p2.surf
+surfstat --iso p2.surf > /dev/null 2>p2.err
+check_rel "periodic = 2 refused: exit 1" $? 1 0
+check "the message names the key" grep -q "periodic = '2'" p2.err
 summary
