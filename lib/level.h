@@ -21,8 +21,8 @@
  * in their offsets, so the grid is marked non-periodic.
  *
  * Harmonic fill: the missing points get the solution of the discrete
- * Laplace equation (5-point stencil, h = dx = dy assumed equal weights
- * scaled by 1/dx^2 and 1/dy^2) with the valid points as Dirichlet data; at
+ * Laplace equation (5-point stencil, neighbours along x weighted 1/dx^2,
+ * along y 1/dy^2) with the valid points as Dirichlet data; at
  * the edge of a non-periodic grid the missing neighbours outside the grid
  * are left out of the stencil (a zero-flux edge), a periodic grid wraps.
  * Solved by successive over-relaxation, red-black order, with the
