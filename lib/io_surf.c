@@ -69,6 +69,10 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 	if (g->unit[0] != '\0')
 		addkv(&head, "unit", g->unit);
 	addkv(&head, "kind", rc_kind_name(g->kind));
+	/* a finite patch says so; a periodic grid (the default) says nothing,
+	 * so that files of periodic grids are as before */
+	if (!g->periodic)
+		addkv(&head, "periodic", "0");
 	addkv(&head, "encoding", "float64-le");
 	for (size_t i = 0; i < g->nmeta; i++) {
 		add(&tail, "meta.");
@@ -146,9 +150,11 @@ split(char *line, char **key, char **val)
 	return 0;
 }
 
-enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_N };
+enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_PERIODIC,
+	K_N };
 static const char *keys[K_N] = {
-	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset"
+	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset",
+	"periodic"
 };
 
 /* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
@@ -282,7 +288,8 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		}
 	}
 	for (r = 0; r < K_N; r++)
-		if (vals[r] == NULL && r != K_UNIT && r != K_OFFSET) {
+		if (vals[r] == NULL && r != K_UNIT && r != K_OFFSET &&
+		    r != K_PERIODIC) {
 			rc_seterr(err, "header lacks the required key '%s'", keys[r]);
 			goto fail;
 		}
@@ -322,6 +329,12 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 	}
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		goto fail;
+	if (vals[K_PERIODIC] != NULL && strcmp(vals[K_PERIODIC], "0") != 0 &&
+	    strcmp(vals[K_PERIODIC], "1") != 0) {
+		rc_seterr(err, "periodic = '%s': must be 0 or 1", rc_io_quote(q, 32,
+		    vals[K_PERIODIC], strlen(vals[K_PERIODIC])));
+		goto fail;
+	}
 	if (header_ny != NULL) {
 		*header_ny = ny;
 		if ((g = rc_grid_new(nx, 1, lx, ly, err)) == NULL)
@@ -329,6 +342,7 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
 		goto fail;
 	g->kind = (enum rc_kind)kind;
+	g->periodic = vals[K_PERIODIC] == NULL || strcmp(vals[K_PERIODIC], "1") == 0;
 	if (vals[K_UNIT] != NULL)
 		strcpy(g->unit, vals[K_UNIT]);
 	for (size_t i = 0; i < nmeta; i++)

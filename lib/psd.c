@@ -19,14 +19,84 @@ part_start(long p, size_t n)
 	return (size_t)p * n / NPART;
 }
 
-/* Transform g into a plan (fft, or own made here). */
+double
+rc_window_value(enum rc_window w, size_t k, size_t n)
+{
+	double t = ((double)k + 0.5) / (double)n;
+
+	if (n < 2)
+		return 1;
+	switch (w) {
+	case RC_WINDOW_HANN:
+		return 0.5 * (1 - cos(2 * M_PI * t));
+	case RC_WINDOW_BLACKMAN:
+		return 0.42 - 0.5 * cos(2 * M_PI * t) + 0.08 * cos(4 * M_PI * t);
+	case RC_WINDOW_TUKEY:
+		/* alpha = 1/2: cosine tapers over a quarter at each end */
+		if (t < 0.25)
+			return 0.5 * (1 - cos(4 * M_PI * t));
+		if (t > 0.75)
+			return 0.5 * (1 - cos(4 * M_PI * (1 - t)));
+		return 1;
+	default:
+		return 1;
+	}
+}
+
+static const char *window_names[] = { "none", "hann", "blackman", "tukey" };
+
+const char *
+rc_window_name(enum rc_window w)
+{
+	return (unsigned)w < 4 ? window_names[w] : "auto";
+}
+
+int
+rc_window_parse(const char *name)
+{
+	for (int k = 0; k < 4; k++)
+		if (strcmp(name, window_names[k]) == 0)
+			return k;
+	return -1;
+}
+
+enum rc_window
+rc_window_resolve(const rc_grid *g, enum rc_window w)
+{
+	if (w == RC_WINDOW_AUTO)
+		return g->periodic ? RC_WINDOW_NONE : RC_WINDOW_HANN;
+	return w;
+}
+
+/* Mean of w^2 along an axis of n points. */
+static double
+window_power(enum rc_window w, size_t n)
+{
+	double s = 0;
+
+	for (size_t k = 0; k < n; k++) {
+		double v = rc_window_value(w, k, n);
+		s += v * v;
+	}
+	return s / (double)n;
+}
+
+/* Transform g into a plan (fft, or own made here).  With a window the
+ * mean is removed first (so that it does not leak into the lowest modes
+ * through the window's own spectrum) and *scale is 1 / mean(w^2), the
+ * factor that makes sum C dq^2 = <h^2> hold on average for white noise;
+ * without, *scale = 1. */
 static int
 forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
-    rc_err *err)
+    enum rc_window window, double *scale, rc_err *err)
 {
 	size_t n = rc_grid_size(g);
 
 	memset(own, 0, sizeof(*own));
+	if (g->valid != NULL)
+		return rc_seterr(err, "the grid has missing points: a spectrum "
+		    "needs every point (fill them with surfwarp --fill)");
+	window = rc_window_resolve(g, window);
 	if (fft == NULL) {
 		if (rc_fft_init(own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
 			return -1;
@@ -35,13 +105,34 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
 		    fft->nx, fft->ny, g->nx, g->ny);
 	memcpy(fft->real, g->z, n * sizeof(double));
-	if (demean) {
+	if (demean || window != RC_WINDOW_NONE) {
 		double mean;
 		long nl = (long)n;
 		rc_mean_rms(g->z, n, &mean, NULL);
 		#pragma omp parallel for schedule(static)
 		for (long k = 0; k < nl; k++)
 			fft->real[k] -= mean;
+	}
+	if (scale != NULL)
+		*scale = 1;
+	if (window != RC_WINDOW_NONE) {
+		size_t nx = g->nx, ny = g->ny;
+		double *wx = rc_malloc(nx * sizeof(double), err);
+		if (wx == NULL) {
+			rc_fft_free(own);
+			return -1;
+		}
+		for (size_t i = 0; i < nx; i++)
+			wx[i] = rc_window_value(window, i, nx);
+		#pragma omp parallel for schedule(static)
+		for (size_t j = 0; j < ny; j++) {
+			double wy = rc_window_value(window, j, ny);
+			for (size_t i = 0; i < nx; i++)
+				fft->real[j * nx + i] *= wx[i] * wy;
+		}
+		free(wx);
+		if (scale != NULL)
+			*scale = 1 / (window_power(window, nx) * window_power(window, ny));
 	}
 	rc_fft_forward(fft);
 	*use = fft;
@@ -50,23 +141,31 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 
 /* C of half-complex entry (i, j): |h_k|^2 A / ((2 pi)^2 N^2). */
 static double
-mode_c(const rc_grid *g, const rc_fft *f, size_t i, size_t j)
+mode_c(const rc_grid *g, const rc_fft *f, size_t i, size_t j, double scale)
 {
 	double n = (double)rc_grid_size(g);
 	double a = cabs(f->spec[j * f->nxc + i]);
 
-	return a * a * g->lx * g->ly / (4 * M_PI * M_PI * n * n);
+	return a * a * g->lx * g->ly / (4 * M_PI * M_PI * n * n) * scale;
 }
 
 rc_grid *
 rc_psd2d(const rc_grid *g, rc_fft *fft, rc_err *err)
 {
+	return rc_psd2d_window(g, fft, RC_WINDOW_AUTO, err);
+}
+
+rc_grid *
+rc_psd2d_window(const rc_grid *g, rc_fft *fft, enum rc_window window,
+    rc_err *err)
+{
 	rc_fft own, *f;
+	double scale;
 	rc_grid *s;
 	size_t nx = g->nx, ny = g->ny;
 	double dqx = 2 * M_PI / g->lx, dqy = 2 * M_PI / g->ly;
 
-	if (forward(g, fft, &own, &f, 0, err) != 0)
+	if (forward(g, fft, &own, &f, 0, window, &scale, err) != 0)
 		return NULL;
 	s = rc_grid_new(nx, ny, dqx * (double)nx, dqy * (double)ny, err);
 	if (s == NULL)
@@ -78,8 +177,8 @@ rc_psd2d(const rc_grid *g, rc_fft *fft, rc_err *err)
 		for (size_t i = 0; i < nx; i++) {
 			size_t ii = (i + nx - nx / 2) % nx;
 			/* The other half plane is the conjugate of (-ii, -jj). */
-			double c = ii < f->nxc ? mode_c(g, f, ii, jj) :
-			    mode_c(g, f, nx - ii, (ny - jj) % ny);
+			double c = ii < f->nxc ? mode_c(g, f, ii, jj, scale) :
+			    mode_c(g, f, nx - ii, (ny - jj) % ny, scale);
 			s->z[j * nx + i] = c;
 		}
 	}
@@ -89,7 +188,8 @@ rc_psd2d(const rc_grid *g, rc_fft *fft, rc_err *err)
 	    rc_grid_meta_setf(s, "q0_index", err, "%zu,%zu", nx / 2, ny / 2) != 0 ||
 	    rc_grid_meta_set(s, "spectrum_convention",
 	    "C(q)=(2pi)^-2*int(d2r<h(0)h(r)>exp(-iq.r)),sum(C)*dqx*dqy=<h^2>",
-	    err) != 0) {
+	    err) != 0 || rc_grid_meta_set(s, "window",
+	    rc_window_name(rc_window_resolve(g, window)), err) != 0) {
 		rc_grid_free(s);
 		s = NULL;
 	}
@@ -127,7 +227,16 @@ int
 rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
     rc_psd_bin **bins, size_t *nbins, rc_err *err)
 {
+	return rc_psd_radial_window(g, fft, bins_per_decade, RC_WINDOW_AUTO,
+	    bins, nbins, err);
+}
+
+int
+rc_psd_radial_window(const rc_grid *g, rc_fft *fft, double bins_per_decade,
+    enum rc_window window, rc_psd_bin **bins, size_t *nbins, rc_err *err)
+{
 	rc_fft own, *f;
+	double scale;
 	double qmin = INFINITY, qmax = 0;
 	size_t nb;
 	struct acc { double w, wq, wc, v, vc, vdev; } *acc = NULL;
@@ -139,7 +248,7 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 		return rc_seterr(err, "bins per decade must be positive and finite");
 	if (rc_grid_size(g) < 2)
 		return rc_seterr(err, "a 1x1 grid has no mode besides q = 0");
-	if (forward(g, fft, &own, &f, 0, err) != 0)
+	if (forward(g, fft, &own, &f, 0, window, &scale, err) != 0)
 		return -1;
 	#pragma omp parallel for reduction(min:qmin) reduction(max:qmax) schedule(static)
 	for (size_t j = 0; j < g->ny; j++)
@@ -168,7 +277,7 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 					b = (size_t)floor(bins_per_decade * log10(q / qmin) + 0.5);
 					if (b >= nb)
 						b = nb - 1;
-					c = mode_c(g, f, i, j);
+					c = mode_c(g, f, i, j, scale);
 					v = independent_weight(g, i, j);
 					if (pass == 0) {
 						double w = rc_fft_weight(i, g->nx);
@@ -225,7 +334,7 @@ rc_psd_moments_x(const rc_grid *g, rc_fft *fft, double *m0, double *m2,
 	double part[NPART][3];
 	double dq2 = 4 * M_PI * M_PI / (g->lx * g->ly);
 
-	if (forward(g, fft, &own, &f, 0, err) != 0)
+	if (forward(g, fft, &own, &f, 0, RC_WINDOW_NONE, NULL, err) != 0)
 		return -1;
 	#pragma omp parallel for schedule(static)
 	for (long p = 0; p < NPART; p++) {
@@ -236,7 +345,7 @@ rc_psd_moments_x(const rc_grid *g, rc_fft *fft, double *m0, double *m2,
 				if (i == 0 && j == 0)
 					continue;
 				w = rc_fft_weight(i, g->nx);
-				c = w * mode_c(g, f, i, j) * dq2;
+				c = w * mode_c(g, f, i, j, 1) * dq2;
 				qx = rc_wavenumber(i, g->nx, g->lx);
 				dqx = rc_deriv_wavenumber(i, g->nx, g->lx);
 				s0 += c;
@@ -270,8 +379,200 @@ min_image(size_t k, size_t n)
 	return k <= n / 2 ? (double)k : (double)k - (double)n;
 }
 
+static int acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts,
+    size_t *npts, rc_err *err);
+
+/* Non-periodic G(r): the grid zero-padded to (2 nx) x (2 ny) (an axis
+ * of one point is not padded), so that no pair wraps around.  With b the
+ * valid-point indicator (1 everywhere here), a = b h^2, c = b h and
+ * corr(f, g)(r) = sum_x f(x) g(x + r):
+ *   S(r) = sum over pairs inside the patch of (h(x + r) - h(x))^2
+ *        = corr(a, b) + corr(b, a) - 2 corr(c, c),   N(r) = corr(b, b),
+ * G(r) = S(r) / N(r).  Each correlation is one product of transforms. */
+static int
+acf_padded(const rc_grid *g, double *gval, double *npairs, size_t *pnx,
+    size_t *pny, rc_err *err)
+{
+	size_t nx = g->nx, ny = g->ny;
+	size_t px = nx > 1 ? 2 * nx : 1, py = ny > 1 ? 2 * ny : 1;
+	size_t nc, npad = px * py;
+	rc_fft f;
+	fftw_complex *fa = NULL, *fb = NULL;
+	double mean;
+	int rc = -1;
+
+	if (rc_fft_init(&f, px, py, RC_FFT_ESTIMATE, err) != 0)
+		return -1;
+	nc = f.nxc * py;
+	if ((fa = fftw_alloc_complex(nc)) == NULL ||
+	    (fb = fftw_alloc_complex(nc)) == NULL) {
+		rc_seterr(err, "out of memory for the padded ACF (%zux%zu)", px, py);
+		goto out;
+	}
+	rc_mean_rms(g->z, nx * ny, &mean, NULL);
+	/* a = h^2 (heights about the mean, for round-off) */
+	memset(f.real, 0, npad * sizeof(double));
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++) {
+			double h = g->z[j * nx + i] - mean;
+			f.real[j * px + i] = h * h;
+		}
+	rc_fft_forward(&f);
+	memcpy(fa, f.spec, nc * sizeof(fftw_complex));
+	/* b = 1 */
+	memset(f.real, 0, npad * sizeof(double));
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++)
+			f.real[j * px + i] = 1;
+	rc_fft_forward(&f);
+	memcpy(fb, f.spec, nc * sizeof(fftw_complex));
+	/* N(r): the inverse of |B|^2 */
+	for (size_t m = 0; m < nc; m++)
+		f.spec[m] = fb[m] * conj(fb[m]);
+	rc_fft_backward(&f);
+	for (size_t m = 0; m < npad; m++)
+		npairs[m] = f.real[m] / (double)npad;
+	/* 2 Re(conj(A) B) is the transform of corr(a, b) + corr(b, a) */
+	for (size_t m = 0; m < nc; m++)
+		fa[m] = 2 * creal(conj(fa[m]) * fb[m]);
+	/* c = h */
+	memset(f.real, 0, npad * sizeof(double));
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++)
+			f.real[j * px + i] = g->z[j * nx + i] - mean;
+	rc_fft_forward(&f);
+	for (size_t m = 0; m < nc; m++)
+		f.spec[m] = fa[m] - 2 * f.spec[m] * conj(f.spec[m]);
+	rc_fft_backward(&f);
+	for (size_t m = 0; m < npad; m++) {
+		/* Displacements with no pair (|rx| = nx in the padding) */
+		double np = floor(npairs[m] + 0.5);
+		npairs[m] = np;
+		gval[m] = np >= 1 ? fmax(f.real[m] / (double)npad, 0) / np : NAN;
+	}
+	*pnx = px;
+	*pny = py;
+	rc = 0;
+out:
+	fftw_free(fa);
+	fftw_free(fb);
+	rc_fft_free(&f);
+	return rc;
+}
+
+static int
+acf_nonperiodic(const rc_grid *g, int half, rc_acf_point **pts, size_t *npts,
+    rc_err *err)
+{
+	size_t nx = g->nx, ny = g->ny, px = 1, py = 1, nrad, cap, k = 0;
+	size_t npad = (nx > 1 ? 2 * nx : 1) * (ny > 1 ? 2 * ny : 1);
+	double dx = g->lx / (double)nx, dy = g->ly / (double)ny;
+	double dr = ny == 1 ? dx : nx == 1 ? dy : fmax(dx, dy);
+	double rmax = ny == 1 ? 0.5 * g->lx : nx == 1 ? 0.5 * g->ly :
+	    0.5 * fmin(g->lx, g->ly), f = half ? 0.5 : 1;
+	double *gv = NULL, *np = NULL, *ssum = NULL, *psum = NULL, *rsum = NULL;
+	size_t *cnt = NULL;
+	int rc = -1;
+
+	*pts = NULL;
+	*npts = 0;
+	if ((gv = rc_malloc(npad * sizeof(double), err)) == NULL ||
+	    (np = rc_malloc(npad * sizeof(double), err)) == NULL ||
+	    acf_padded(g, gv, np, &px, &py, err) != 0)
+		goto out;
+	nrad = (size_t)floor(rmax / dr + 0.5) + 1;
+	cap = (nx / 2 + 1) + (ny / 2 + 1) + nrad;
+	if ((*pts = rc_calloc(cap, sizeof(**pts), err)) == NULL ||
+	    (ssum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
+	    (psum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
+	    (rsum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
+	    (cnt = rc_calloc(nrad, sizeof(size_t), err)) == NULL)
+		goto out;
+	for (size_t i = 0; i <= nx / 2; i++) {
+		rc_acf_point *p = &(*pts)[k++];
+		p->dir = RC_ACF_X;
+		p->r = (double)i * dx;
+		p->g = f * gv[i];
+		p->n = (size_t)np[i];
+	}
+	for (size_t j = 0; j <= ny / 2; j++) {
+		rc_acf_point *p = &(*pts)[k++];
+		p->dir = RC_ACF_Y;
+		p->r = (double)j * dy;
+		p->g = f * gv[j * px];
+		p->n = (size_t)np[j * px];
+	}
+	/* Radial: pair-weighted mean over the displacements of each bin. */
+	for (size_t j = 0; j < py; j++)
+		for (size_t i = 0; i < px; i++) {
+			double r = hypot(min_image(i, px) * dx, min_image(j, py) * dy);
+			size_t b, m = j * px + i;
+			if (r > rmax * (1 + 1e-12) || !(np[m] >= 1))
+				continue;
+			b = (size_t)floor(r / dr + 0.5);
+			if (b >= nrad)
+				b = nrad - 1;
+			rsum[b] += r * np[m];
+			ssum[b] += gv[m] * np[m];
+			psum[b] += np[m];
+			cnt[b]++;
+		}
+	for (size_t b = 0; b < nrad; b++) {
+		rc_acf_point *p;
+		if (cnt[b] == 0)
+			continue;
+		p = &(*pts)[k++];
+		p->dir = RC_ACF_RADIAL;
+		p->r = rsum[b] / psum[b];
+		p->g = f * ssum[b] / psum[b];
+		p->n = cnt[b];
+	}
+	*npts = k;
+	rc = 0;
+out:
+	if (rc != 0) {
+		free(*pts);
+		*pts = NULL;
+	}
+	free(gv);
+	free(np);
+	free(ssum);
+	free(psum);
+	free(rsum);
+	free(cnt);
+	return rc;
+}
+
 int
 rc_acf(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
+    rc_err *err)
+{
+	return rc_acf_ex(g, fft, 0, pts, npts, err);
+}
+
+int
+rc_acf_ex(const rc_grid *g, rc_fft *fft, int half, rc_acf_point **pts,
+    size_t *npts, rc_err *err)
+{
+	int rc;
+
+	if (g->valid != NULL) {
+		*pts = NULL;
+		*npts = 0;
+		return rc_seterr(err, "the grid has missing points: the ACF needs "
+		    "every point (fill them with surfwarp --fill)");
+	}
+	if (!g->periodic)
+		return acf_nonperiodic(g, half, pts, npts, err);
+	rc = acf_periodic(g, fft, pts, npts, err);
+	if (rc == 0 && half)
+		for (size_t k = 0; k < *npts; k++)
+			(*pts)[k].g *= 0.5;
+	return rc;
+}
+
+static int
+acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
     rc_err *err)
 {
 	rc_fft own, *f;
@@ -284,7 +585,7 @@ rc_acf(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
 
 	*pts = NULL;
 	*npts = 0;
-	if (forward(g, fft, &own, &f, 1, err) != 0)
+	if (forward(g, fft, &own, &f, 1, RC_WINDOW_NONE, NULL, err) != 0)
 		return -1;
 	/* Autocorrelation R(r) = (1/N) sum_r0 dh(r0) dh(r0 + r): the inverse
 	 * transform of |h_k|^2, divided by N^2. */
@@ -352,5 +653,98 @@ out:
 	free(gsum);
 	free(cnt);
 	rc_fft_free(&own);
+	return rc;
+}
+
+int
+rc_psd1d(const rc_grid *g, enum rc_psd1d_dir dir, enum rc_window window,
+    rc_psd1d_point **pts, size_t *npts, rc_err *err)
+{
+	size_t n = dir == RC_PSD1D_X ? g->nx : g->ny;
+	size_t lines = dir == RC_PSD1D_X ? g->ny : g->nx;
+	size_t stride = dir == RC_PSD1D_X ? 1 : g->nx;	/* along a line */
+	size_t step = dir == RC_PSD1D_X ? g->nx : 1;	/* between lines */
+	size_t nc = n / 2 + 1;
+	double len = dir == RC_PSD1D_X ? g->lx : g->ly, scale = 1;
+	double *w = NULL, *re = NULL, *sum = NULL, *sum2 = NULL;
+	fftw_complex *sp = NULL;
+	fftw_plan plan = NULL;
+	int rc = -1;
+
+	*pts = NULL;
+	*npts = 0;
+	if (g->valid != NULL)
+		return rc_seterr(err, "the grid has missing points: a spectrum "
+		    "needs every point (fill them with surfwarp --fill)");
+	if (n < 2)
+		return rc_seterr(err, "a 1D spectrum along %s needs at least 2 points "
+		    "on that axis", dir == RC_PSD1D_X ? "x" : "y");
+	window = rc_window_resolve(g, window);
+	if ((w = rc_malloc(n * sizeof(double), err)) == NULL ||
+	    (sum = rc_calloc(nc, sizeof(double), err)) == NULL ||
+	    (sum2 = rc_calloc(nc, sizeof(double), err)) == NULL)
+		goto out;
+	for (size_t k = 0; k < n; k++)
+		w[k] = rc_window_value(window, k, n);
+	if (window != RC_WINDOW_NONE)
+		scale = 1 / window_power(window, n);
+	re = fftw_alloc_real(n * lines);
+	sp = fftw_alloc_complex(nc * lines);
+	if (re == NULL || sp == NULL) {
+		rc_seterr(err, "out of memory for %zu lines of %zu points", lines, n);
+		goto out;
+	}
+	{
+		int ni = (int)n;
+		plan = fftw_plan_many_dft_r2c(1, &ni, (int)lines, re, NULL, 1, ni,
+		    sp, NULL, 1, (int)nc, FFTW_ESTIMATE);
+	}
+	if (plan == NULL) {
+		rc_seterr(err, "FFTW could not plan %zu transforms of %zu points",
+		    lines, n);
+		goto out;
+	}
+	/* Each line with its own mean removed before the window (for a
+	 * periodic grid without a window the mean only changes q = 0). */
+	#pragma omp parallel for schedule(static)
+	for (size_t l = 0; l < lines; l++) {
+		const double *src = g->z + l * step;
+		double *dst = re + l * n, mean = 0;
+		for (size_t k = 0; k < n; k++)
+			mean += src[k * stride];
+		mean /= (double)n;
+		for (size_t k = 0; k < n; k++)
+			dst[k] = (src[k * stride] - mean) * w[k];
+	}
+	fftw_execute(plan);
+	/* C1D(q_k) = |h_k|^2 L / (2 pi n^2) / mean(w^2), averaged over lines */
+	for (size_t l = 0; l < lines; l++)
+		for (size_t k = 1; k < nc; k++) {
+			double a = cabs(sp[l * nc + k]);
+			double c = a * a * len / (2 * M_PI * (double)n * (double)n) * scale;
+			sum[k] += c;
+			sum2[k] += c * c;
+		}
+	if ((*pts = rc_calloc(nc - 1, sizeof(**pts), err)) == NULL)
+		goto out;
+	for (size_t k = 1; k < nc; k++) {
+		rc_psd1d_point *p = &(*pts)[k - 1];
+		double mean = sum[k] / (double)lines;
+		p->q = 2 * M_PI * (double)k / len;
+		p->c = mean;
+		p->n_lines = lines;
+		p->std_err = lines >= 2 ? sqrt(fmax(sum2[k] / (double)lines - mean * mean,
+		    0) * (double)lines / (double)(lines - 1) / (double)lines) : NAN;
+	}
+	*npts = nc - 1;
+	rc = 0;
+out:
+	if (plan != NULL)
+		fftw_destroy_plan(plan);
+	fftw_free(re);
+	fftw_free(sp);
+	free(w);
+	free(sum);
+	free(sum2);
 	return rc;
 }

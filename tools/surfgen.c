@@ -1,11 +1,17 @@
 /* surfgen - make a height map: self-affine random roughness (Eqs. 2, 3 of
- * Wang & Mueser 2020), harmonic indenters (Eq. 5), sine, egg box, flat. */
+ * Wang & Mueser 2020), harmonic indenters (Eq. 5), sine, egg box, flat;
+ * or a periodic self-affine surface like a measured one (--like). */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+
+#include "atomic.h"
 #include "clock.h"
 #include "fft.h"
+#include "fit.h"
 #include "png.h"
 #include "surfgen_opts.h"
 
@@ -31,6 +37,10 @@ usage(void)
 	    " harmonic:  --exponent N (default 2)  --radius R (default 1)\n"
 	    " sine, eggbox:  --wavelength W (default LX)  --amplitude A (default 1)\n"
 	    "  (--rms-gradient/--rms-height rescale these types too when given)\n"
+	    "  --like FILE           self-affine like FILE: a surfstat --fit table, or a\n"
+	    "                        surface (fitted as surfstat --fit does): H, lambda_r,\n"
+	    "                        lambda_s, rolloff, rms height and (unless -n, -L)\n"
+	    "                        the grid from the fit; --seed picks the realisation\n"
 	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
 	    "  --png FILE            PNG preview\n"
 	    "  --fft-effort E        estimate (default), measure or patient FFT planning\n"
@@ -45,8 +55,43 @@ static const struct option longopts[] = {
 	{ "png", required_argument, NULL, OPT_PNG },
 	TOOL_FFT_LONGOPTS,
 	SURFGEN_LONGOPTS,
+	{ "like", required_argument, NULL, OPT_TOOL_FIRST + 90 },
 	{ NULL, 0, NULL, 0 }
 };
+
+#define OPT_LIKE (OPT_TOOL_FIRST + 90)
+
+/* The fit of --like FILE: a fit table, else a surface fitted here. */
+static void
+load_like(struct tool *t, const char *path, rc_fit *f, size_t *nx, size_t *ny,
+    double *lx, double *ly)
+{
+	FILE *fp = fopen(path, "rb");
+	char head[4096];
+	size_t n;
+	rc_err err;
+	int r;
+
+	if (fp == NULL)
+		tool_fail(t, "--like %s: cannot open", path);
+	n = fread(head, 1, sizeof(head) - 1, fp);
+	fclose(fp);
+	head[n] = '\0';
+	if ((r = rc_fit_table_parse(head, f, nx, ny, lx, ly, &err)) < 0)
+		tool_fail(t, "--like %s: %s", path, err.msg);
+	if (r == 0) {
+		rc_grid *g = tool_read_grid(t, path);
+		rc_fit_opts fo;
+		rc_fit_opts_default(&fo);
+		if (rc_fit_selfaffine(g, NULL, &fo, f, &err) != 0)
+			tool_fail(t, "--like %s: %s", path, err.msg);
+		*nx = g->nx;
+		*ny = g->ny;
+		*lx = g->lx;
+		*ly = g->ly;
+		rc_grid_free(g);
+	}
+}
 
 int
 main(int argc, char **argv)
@@ -56,7 +101,8 @@ main(int argc, char **argv)
 	rc_synth_params *p = &o.p;
 	rc_err err;
 	rc_grid *g;
-	int opt;
+	int opt, have_n = 0, have_l = 0, spectrum_opts = 0;
+	const char *like = NULL;
 	double plan_seconds, seconds;
 	enum rc_fft_effort effort;
 
@@ -68,6 +114,15 @@ main(int argc, char **argv)
 			usage();
 			return tool_exit(&t, 0);
 		}
+		if (opt == OPT_LIKE) {
+			like = optarg;
+			continue;
+		}
+		have_n |= opt == 'n';
+		have_l |= opt == 'L';
+		spectrum_opts |= opt == 'H' || opt == OPT_LAMBDA_R || opt == OPT_LAMBDA_S ||
+		    opt == OPT_ROLLOFF || opt == OPT_RMS_GRADIENT || opt == OPT_RMS_HEIGHT ||
+		    opt == OPT_TYPE;
 		if ((opt != 'L' && tool_common_option(&t, opt, optarg)) ||
 		    surfgen_option(&t, &o, opt, optarg))
 			continue;
@@ -79,6 +134,47 @@ main(int argc, char **argv)
 	}
 	if (optind < argc)
 		tool_bad(&t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
+	if (like != NULL && spectrum_opts)
+		tool_bad(&t, "--like: takes H, lambda_r, lambda_s, rolloff and the rms "
+		    "height from the fit; -H, --lambda-r, --lambda-s, --rolloff, "
+		    "--rms-gradient, --rms-height and --type do not go with it");
+	if (like != NULL) {
+		rc_fit f;
+		size_t nx, ny;
+		double lx, ly;
+		tool_not_input(&t, "-o", t.out, like);
+		tool_usage_check(&t);
+		gsl_set_error_handler_off();
+		load_like(&t, like, &f, &nx, &ny, &lx, &ly);
+		if (!have_n) {
+			p->nx = nx;
+			p->ny = ny;
+		}
+		if (!have_l) {
+			p->lx = lx;
+			p->ly = ly;
+		}
+		p->type = RC_SURF_SELFAFFINE;
+		p->hurst = f.H;
+		p->lambda_r = 2 * M_PI / f.q_r;
+		p->lambda_s = 2 * M_PI / f.q_s;
+		p->rolloff = f.rolloff;
+		p->rms_height = f.hrms;
+		p->rms_gradient = 0;
+		/* A cutoff below two spacings of the new grid is the grid's
+		 * own limit (the fit's q_s may be its range end, the Nyquist
+		 * wave number of the measurement). */
+		if (p->lambda_s < 2 * fmax(p->lx / (double)p->nx, p->ly / (double)p->ny))
+			p->lambda_s = 0;
+		if (!t.quiet)
+			tool_warn(&t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
+			    "lambda_s = %.4g, rms height %.4g", like, p->hurst, p->lambda_r,
+			    p->rolloff ? " (roll-off)" : "", rc_synth_lambda_s(p),
+			    p->rms_height);
+		if (rc_synth_check(p, &err) != 0)
+			tool_fail(&t, "--like %s: the fitted model cannot be made: %s",
+			    like, err.msg);
+	}
 	surfgen_opts_check(&t, &o);
 	tool_check_grid_path(&t, "-o", t.out);
 	tool_output(&t, "-o", t.out ? t.out : "-", 0);

@@ -1,7 +1,9 @@
 /* surfstat - statistics of a height map: rms height and gradient, Nayak,
  * the structural parameters Phi1..Phi9 (Wang & Mueser 2020, section 3.2,
- * corrected as documented in surfstat(1)), C(q), the height-difference
- * ACF, and the gradient tensor by height. */
+ * corrected as documented in surfstat(1)), C(q) (windowed on finite
+ * patches), 1D spectra, the height-difference ACF, the gradient tensor by
+ * height, ISO 25178 parameters, the material ratio curve and the fit of
+ * the self-affine model of Eq. 2. */
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
@@ -11,7 +13,11 @@
 #include "atomic.h"
 #include "clock.h"
 #include "common.h"
+#include <gsl/gsl_errno.h>
+
 #include "fft.h"
+#include "fit.h"
+#include "iso25178.h"
 #include "png.h"
 #include "psd.h"
 #include "spectral.h"
@@ -26,10 +32,19 @@ enum {
 	OPT_BY_HEIGHT,
 	OPT_FD,
 	OPT_GNUPLOT,
-	OPT_BINS
+	OPT_BINS,
+	OPT_WINDOW,
+	OPT_PSD1D,
+	OPT_ACF_HALF,
+	OPT_ISO,
+	OPT_ACF_THRESHOLD,
+	OPT_MATERIAL_RATIO,
+	OPT_FIT,
+	OPT_MIN_WAVELENGTH,
+	OPT_MAX_WAVELENGTH
 };
 
-enum table { T_SCALARS, T_PSD, T_ACF, T_BY_HEIGHT };
+enum table { T_SCALARS, T_PSD, T_ACF, T_BY_HEIGHT, T_PSD1D, T_ISO, T_MR, T_FIT };
 
 static void
 usage(void)
@@ -40,6 +55,19 @@ usage(void)
 	    "  --psd                 radial C(q) table instead: q C n_modes stderr\n"
 	    "  --acf                 height-difference ACF table instead: along x, y, radial\n"
 	    "  --by-height N         gbar and gradient tensor in N height bins instead\n"
+	    "  --psd1d x|y           1D spectrum of the lines along x or y, averaged:\n"
+	    "                        q C1D C1D_ce n_lines stderr (a profile's --psd)\n"
+	    "  --iso                 ISO 25178 parameters instead: Sq Sa Ssk Sku Sp Sv Sz\n"
+	    "                        Sdq Sdr Sal Str Sk Spk Svk Smr1 Smr2 (valid points)\n"
+	    "  --material-ratio N    material ratio (Abbott-Firestone) curve at N heights\n"
+	    "  --fit                 fit the self-affine model of Eq. 2 to C(q): H, q_r,\n"
+	    "                        q_s, hrms with standard errors\n"
+	    "  --window W            none, hann, blackman or tukey before a spectrum\n"
+	    "                        (default hann on finite patches, none if periodic)\n"
+	    "  --acf-half            --acf gives G(r)/2 (contact.engineering's convention)\n"
+	    "  --acf-threshold S     autocorrelation level of Sal and Str (default 0.2)\n"
+	    "  --min-wavelength L    --fit ignores wavelengths below L (unreliable data)\n"
+	    "  --max-wavelength L    --fit ignores wavelengths above L\n"
 	    "  --bins-per-decade N   logarithmic q bins for --psd, --gnuplot (default 10)\n"
 	    "  --psd2d FILE          also write the 2D spectrum as a grid (kind spectrum)\n"
 	    "  --gnuplot FILE        also write a gnuplot script plotting C(q) to PNG\n"
@@ -70,6 +98,15 @@ static const struct option longopts[] = {
 	{ "fd", no_argument, NULL, OPT_FD },
 	{ "gnuplot", required_argument, NULL, OPT_GNUPLOT },
 	{ "bins-per-decade", required_argument, NULL, OPT_BINS },
+	{ "window", required_argument, NULL, OPT_WINDOW },
+	{ "psd1d", required_argument, NULL, OPT_PSD1D },
+	{ "acf-half", no_argument, NULL, OPT_ACF_HALF },
+	{ "iso", no_argument, NULL, OPT_ISO },
+	{ "acf-threshold", required_argument, NULL, OPT_ACF_THRESHOLD },
+	{ "material-ratio", required_argument, NULL, OPT_MATERIAL_RATIO },
+	{ "fit", no_argument, NULL, OPT_FIT },
+	{ "min-wavelength", required_argument, NULL, OPT_MIN_WAVELENGTH },
+	{ "max-wavelength", required_argument, NULL, OPT_MAX_WAVELENGTH },
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -196,7 +233,7 @@ psd_table(const struct tool *t, const rc_psd_bin *b, size_t nb)
 }
 
 static void
-acf_table(const struct tool *t, const rc_grid *g, rc_fft *fft)
+acf_table(const struct tool *t, const rc_grid *g, rc_fft *fft, int half)
 {
 	rc_acf_point *p;
 	size_t np;
@@ -204,7 +241,7 @@ acf_table(const struct tool *t, const rc_grid *g, rc_fft *fft)
 	struct out o;
 	rc_row r;
 
-	if (rc_acf(g, fft, &p, &np, &err) != 0)
+	if (rc_acf_ex(g, fft, half, &p, &np, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	rc_row_init(&r);
 	out_open(t, &o);
@@ -213,7 +250,7 @@ acf_table(const struct tool *t, const rc_grid *g, rc_fft *fft)
 		if (rc_row_str(&r, "direction", rc_acf_dir_name(p[k].dir)) != 0)
 			tool_fail(t, "out of memory");
 		num(t, &r, "r", p[k].r);
-		num(t, &r, "hdacf", p[k].g);
+		num(t, &r, half ? "hdacf_half" : "hdacf", p[k].g);
 		if (rc_row_int(&r, "n", (long long)p[k].n) != 0)
 			tool_fail(t, "out of memory");
 		out_row(t, &o, &r);
@@ -259,6 +296,145 @@ height_table(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	out_close(t, &o);
 	rc_row_free(&r);
 	free(b);
+}
+
+static void
+psd1d_table(const struct tool *t, const rc_grid *g, enum rc_psd1d_dir dir,
+    enum rc_window window)
+{
+	rc_psd1d_point *p;
+	size_t np;
+	rc_err err;
+	struct out o;
+	rc_row r;
+
+	if (rc_psd1d(g, dir, window, &p, &np, &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	rc_row_init(&r);
+	out_open(t, &o);
+	for (size_t k = 0; k < np; k++) {
+		rc_row_clear(&r);
+		num(t, &r, "q", p[k].q);
+		num(t, &r, "C1D", p[k].c);
+		num(t, &r, "C1D_ce", 2 * M_PI * p[k].c);
+		if (rc_row_int(&r, "n_lines", (long long)p[k].n_lines) != 0)
+			tool_fail(t, "out of memory");
+		num(t, &r, "stderr", p[k].std_err);
+		out_row(t, &o, &r);
+	}
+	out_close(t, &o);
+	rc_row_free(&r);
+	free(p);
+}
+
+static void
+iso_row(const struct tool *t, const rc_grid *g, double s)
+{
+	rc_iso iso;
+	rc_err err;
+	rc_row r;
+	struct out o;
+
+	if (rc_iso25178(g, s, &iso, &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	rc_row_init(&r);
+	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
+	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||
+	    rc_row_int(&r, "n_valid", (long long)iso.n_valid) != 0 ||
+	    rc_row_int(&r, "periodic", g->periodic) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "mean", iso.mean);
+	num(t, &r, "Sq", iso.Sq);
+	num(t, &r, "Sa", iso.Sa);
+	num(t, &r, "Ssk", iso.Ssk);
+	num(t, &r, "Sku", iso.Sku);
+	num(t, &r, "Sp", iso.Sp);
+	num(t, &r, "Sv", iso.Sv);
+	num(t, &r, "Sz", iso.Sz);
+	num(t, &r, "Sdq", iso.Sdq);
+	num(t, &r, "Sdr", iso.Sdr);
+	num(t, &r, "Sal", iso.Sal);
+	num(t, &r, "Str", iso.Str);
+	num(t, &r, "Sk", iso.Sk);
+	num(t, &r, "Spk", iso.Spk);
+	num(t, &r, "Svk", iso.Svk);
+	num(t, &r, "Smr1", iso.Smr1);
+	num(t, &r, "Smr2", iso.Smr2);
+	out_open(t, &o);
+	out_row(t, &o, &r);
+	out_close(t, &o);
+	rc_row_free(&r);
+}
+
+static void
+mr_table(const struct tool *t, const rc_grid *g, size_t npoints)
+{
+	double *c, *smr;
+	rc_err err;
+	rc_row r;
+	struct out o;
+
+	if ((c = rc_malloc(npoints * sizeof(double), &err)) == NULL ||
+	    (smr = rc_malloc(npoints * sizeof(double), &err)) == NULL ||
+	    rc_material_ratio(g, npoints, c, smr, &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	rc_row_init(&r);
+	out_open(t, &o);
+	for (size_t k = 0; k < npoints; k++) {
+		rc_row_clear(&r);
+		num(t, &r, "height", c[k]);
+		num(t, &r, "Smr", smr[k]);
+		out_row(t, &o, &r);
+	}
+	out_close(t, &o);
+	rc_row_free(&r);
+	free(c);
+	free(smr);
+}
+
+static void
+fit_row(const struct tool *t, const rc_grid *g, rc_fft *fft,
+    const rc_fit_opts *fo)
+{
+	rc_fit f;
+	rc_err err;
+	rc_row r;
+	struct out o;
+
+	if (rc_fit_selfaffine(g, fft, fo, &f, &err) != 0)
+		tool_fail(t, "--fit: %s", err.msg);
+	rc_row_init(&r);
+	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
+	    rc_row_int(&r, "ny", (long long)g->ny) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "lx", g->lx);
+	num(t, &r, "ly", g->ly);
+	num(t, &r, "H", f.H);
+	num(t, &r, "H_err", f.H_err);
+	num(t, &r, "q_r", f.q_r);
+	num(t, &r, "q_r_err", f.q_r_err);
+	num(t, &r, "q_s", f.q_s);
+	num(t, &r, "q_s_err", f.q_s_err);
+	num(t, &r, "lambda_r", 2 * M_PI / f.q_r);
+	num(t, &r, "lambda_s", 2 * M_PI / f.q_s);
+	num(t, &r, "C_r", f.c_r);
+	num(t, &r, "hrms", f.hrms);
+	num(t, &r, "hrms_err", f.hrms_err);
+	if (rc_row_int(&r, "rolloff", f.rolloff) != 0 ||
+	    rc_row_str(&r, "q_r_from", f.q_r_from) != 0 ||
+	    rc_row_str(&r, "q_s_from", f.q_s_from) != 0 ||
+	    rc_row_str(&r, "window", rc_window_name(rc_window_resolve(g,
+	    fo->window))) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "fit_q_min", f.fit_q_min);
+	num(t, &r, "fit_q_max", f.fit_q_max);
+	if (rc_row_int(&r, "n_bins", (long long)f.n_bins) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "rms_residual", f.rms_residual);
+	out_open(t, &o);
+	out_row(t, &o, &r);
+	out_close(t, &o);
+	rc_row_free(&r);
 }
 
 /* A self-contained gnuplot script: the table as a data block, log-log
@@ -317,9 +493,12 @@ main(int argc, char **argv)
 	const char *mask_path = NULL, *psd2d = NULL, *gp = NULL, *in = NULL;
 	enum table table = T_SCALARS;
 	enum rc_deriv_method method = RC_DERIV_SPECTRAL;
-	int ntables = 0, opt;
-	size_t nbins = 0;
-	double bpd = 10;
+	enum rc_window window = RC_WINDOW_AUTO;
+	enum rc_psd1d_dir dir1d = RC_PSD1D_X;
+	int ntables = 0, opt, acf_half = 0, have_window = 0, have_s = 0;
+	size_t nbins = 0, nmr = 0;
+	double bpd = 10, acf_s = 0.2, min_wl = 0, max_wl = 0;
+	rc_fit_opts fo;
 	long v;
 	rc_grid *g, *mask = NULL;
 	rc_fft fft, *plan;
@@ -359,6 +538,64 @@ main(int argc, char **argv)
 		case OPT_PSD2D:
 			psd2d = optarg;
 			break;
+		case OPT_PSD1D:
+			table = T_PSD1D;
+			ntables++;
+			if (strcmp(optarg, "x") == 0)
+				dir1d = RC_PSD1D_X;
+			else if (strcmp(optarg, "y") == 0)
+				dir1d = RC_PSD1D_Y;
+			else
+				tool_bad(&t, "--psd1d %s: want x or y", optarg);
+			break;
+		case OPT_ISO:
+			table = T_ISO;
+			ntables++;
+			break;
+		case OPT_FIT:
+			table = T_FIT;
+			ntables++;
+			break;
+		case OPT_MATERIAL_RATIO:
+			table = T_MR;
+			ntables++;
+			if (tool_long(&t, "--material-ratio", optarg, &v) == 0) {
+				if (v < 2 || v > 1000000)
+					tool_bad(&t, "--material-ratio %s: want 2 to 1000000 "
+					    "heights", optarg);
+				else
+					nmr = (size_t)v;
+			}
+			break;
+		case OPT_WINDOW: {
+			int w = rc_window_parse(optarg);
+			have_window = 1;
+			if (w < 0)
+				tool_bad(&t, "--window %s: want none, hann, blackman or tukey",
+				    optarg);
+			else
+				window = (enum rc_window)w;
+			break;
+		}
+		case OPT_ACF_HALF:
+			acf_half = 1;
+			break;
+		case OPT_ACF_THRESHOLD:
+			have_s = 1;
+			if (tool_double(&t, "--acf-threshold", optarg, &acf_s) == 0 &&
+			    !(acf_s > 0 && acf_s < 1))
+				tool_bad(&t, "--acf-threshold %s: want 0 < S < 1", optarg);
+			break;
+		case OPT_MIN_WAVELENGTH:
+			if (tool_double(&t, "--min-wavelength", optarg, &min_wl) == 0 &&
+			    !(min_wl > 0 && isfinite(min_wl)))
+				tool_bad(&t, "--min-wavelength %s: must be positive", optarg);
+			break;
+		case OPT_MAX_WAVELENGTH:
+			if (tool_double(&t, "--max-wavelength", optarg, &max_wl) == 0 &&
+			    !(max_wl > 0 && isfinite(max_wl)))
+				tool_bad(&t, "--max-wavelength %s: must be positive", optarg);
+			break;
 		case OPT_GNUPLOT:
 			gp = optarg;
 			break;
@@ -383,12 +620,26 @@ main(int argc, char **argv)
 	if (optind < argc)
 		tool_bad(&t, "%s: unexpected argument (one input file)", argv[optind]);
 	if (ntables > 1)
-		tool_bad(&t, "--psd, --acf, --by-height: choose one table per run");
-	if (mask_path != NULL && (table == T_PSD || table == T_ACF))
+		tool_bad(&t, "--psd, --psd1d, --acf, --by-height, --iso, "
+		    "--material-ratio, --fit: choose one table per run");
+	if (mask_path != NULL && table != T_SCALARS && table != T_BY_HEIGHT)
 		tool_bad(&t, "--mask: applies to the scalar row and --by-height, "
-		    "not to spectra or the ACF");
-	if (method == RC_DERIV_FD && (table == T_PSD || table == T_ACF))
+		    "not to spectra, the ACF, --iso, --material-ratio or --fit");
+	if (method == RC_DERIV_FD && table != T_SCALARS && table != T_BY_HEIGHT)
 		tool_bad(&t, "--fd: applies to the scalar row and --by-height only");
+	if (have_window && table != T_PSD && table != T_PSD1D && table != T_FIT &&
+	    psd2d == NULL && gp == NULL)
+		tool_bad(&t, "--window: applies to --psd, --psd1d, --psd2d, --gnuplot "
+		    "and --fit");
+	if (acf_half && table != T_ACF)
+		tool_bad(&t, "--acf-half: only with --acf");
+	if (have_s && table != T_ISO)
+		tool_bad(&t, "--acf-threshold: only with --iso");
+	if ((min_wl > 0 || max_wl > 0) && table != T_FIT)
+		tool_bad(&t, "--min-wavelength, --max-wavelength: only with --fit");
+	if (min_wl > 0 && max_wl > 0 && !(min_wl < max_wl))
+		tool_bad(&t, "--min-wavelength %g, --max-wavelength %g: need min < max",
+		    min_wl, max_wl);
 	if (psd2d != NULL)
 		tool_check_grid_path(&t, "--psd2d", psd2d);
 	tool_output(&t, "-o", t.out ? t.out : "-", 0);
@@ -407,7 +658,31 @@ main(int argc, char **argv)
 	tool_usage_check(&t);
 
 	tool_fft_setup(&t);
+	gsl_set_error_handler_off();	/* GSL reports through return codes */
+	rc_fit_opts_default(&fo);
+	fo.window = window;
+	fo.bins_per_decade = bpd;
+	fo.q_max = min_wl > 0 ? 2 * M_PI / min_wl : 0;
+	fo.q_min = max_wl > 0 ? 2 * M_PI / max_wl : 0;
 	g = tool_read_grid(&t, in);
+	{
+		/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D
+		 * C(q) would scale with the meaningless strip width. */
+		int profile = (g->nx == 1) != (g->ny == 1);
+		if (profile && table == T_PSD) {
+			table = T_PSD1D;
+			dir1d = g->ny == 1 ? RC_PSD1D_X : RC_PSD1D_Y;
+		}
+		if (profile && (psd2d != NULL || gp != NULL))
+			tool_fail(&t, "%s: a %zux%zu profile has no 2D spectrum "
+			    "(--psd2d, --gnuplot); --psd gives its 1D spectrum",
+			    in ? in : "standard input", g->nx, g->ny);
+		if (g->valid != NULL && table != T_ISO && table != T_MR)
+			tool_fail(&t, "%s: the grid has missing points; --iso and "
+			    "--material-ratio use the valid ones, everything else "
+			    "needs them filled (surfwarp --fill)",
+			    in ? in : "standard input");
+	}
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)
@@ -419,7 +694,8 @@ main(int argc, char **argv)
 	 * take nine), made after the mask so that planning never waits on
 	 * input that turns out bad. */
 	memset(&fft, 0, sizeof(fft));
-	if ((table != T_BY_HEIGHT || method == RC_DERIV_SPECTRAL || psd2d != NULL ||
+	if (table != T_PSD1D && table != T_ISO && table != T_MR &&
+	    (table != T_BY_HEIGHT || method == RC_DERIV_SPECTRAL || psd2d != NULL ||
 	    gp != NULL) && rc_fft_init(&fft, g->nx, g->ny,
 	    tool_fft_effort(&t, g->nx, g->ny, 5), &err) != 0)
 		tool_fail(&t, "%s", err.msg);
@@ -429,7 +705,7 @@ main(int argc, char **argv)
 		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s", g->nx, g->ny,
 		    rc_fft_effort_name(fft.effort), fft.plan_seconds);
 	if (psd2d != NULL) {
-		rc_grid *s = rc_psd2d(g, plan, &err);
+		rc_grid *s = rc_psd2d_window(g, plan, window, &err);
 		if (s == NULL)
 			tool_fail(&t, "%s", err.msg);
 		tool_write_grid(&t, s, psd2d);
@@ -438,7 +714,7 @@ main(int argc, char **argv)
 	if (table == T_PSD || gp != NULL) {
 		rc_psd_bin *b;
 		size_t nb;
-		if (rc_psd_radial(g, plan, bpd, &b, &nb, &err) != 0)
+		if (rc_psd_radial_window(g, plan, bpd, window, &b, &nb, &err) != 0)
 			tool_fail(&t, "%s", err.msg);
 		if (gp != NULL)
 			gnuplot_script(&t, gp, g, b, nb);
@@ -451,7 +727,19 @@ main(int argc, char **argv)
 		scalars(&t, g, mask, method, plan);
 		break;
 	case T_ACF:
-		acf_table(&t, g, plan);
+		acf_table(&t, g, plan, acf_half);
+		break;
+	case T_PSD1D:
+		psd1d_table(&t, g, dir1d, window);
+		break;
+	case T_ISO:
+		iso_row(&t, g, acf_s);
+		break;
+	case T_MR:
+		mr_table(&t, g, nmr);
+		break;
+	case T_FIT:
+		fit_row(&t, g, plan, &fo);
 		break;
 	case T_BY_HEIGHT:
 		height_table(&t, g, mask, method, plan, nbins);

@@ -1,15 +1,22 @@
-/* surfwarp - transform a height map: warping (Eq. 4 of Wang & Mueser
- * 2020, in the paper's meaning of w; see surfwarp(1)), flipping, carving
- * the non-contact zone, renormalising the rms gradient. */
+/* surfwarp - transform a height map: levelling and repair of measured
+ * maps (detrending, scan-line alignment, harmonic filling, cropping,
+ * resampling, transposing; in command-line order), then warping (Eq. 4 of
+ * Wang & Mueser 2020, in the paper's meaning of w; see surfwarp(1)),
+ * flipping, carving the non-contact zone, renormalising the rms
+ * gradient. */
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_errno.h>
+
 #include "common.h"
 #include "fft.h"
+#include "level.h"
 #include "png.h"
+#include "resample.h"
 #include "warp.h"
 
 enum {
@@ -20,14 +27,41 @@ enum {
 	OPT_CARVE,
 	OPT_CARVE_WIDTH,
 	OPT_CARVE_ROUGH,
-	OPT_CARVE_SEED
+	OPT_CARVE_SEED,
+	OPT_DETREND,
+	OPT_ALIGN_ROWS,
+	OPT_FILL,
+	OPT_FILLED_MASK,
+	OPT_CROP,
+	OPT_RESAMPLE,
+	OPT_TRANSPOSE
 };
+
+/* A levelling or repair step, applied in command-line order. */
+struct step {
+	int op;			/* OPT_DETREND ... OPT_TRANSPOSE */
+	int mode;		/* detrend or alignment kind */
+	size_t x0, x1, y0, y1;	/* crop */
+	double dx, dy;		/* resample */
+};
+
+#define MAX_STEPS 64
 
 static void
 usage(void)
 {
 	printf("usage: surfwarp [options] [FILE]\n"
-	    "  applied in this order:\n"
+	    "  levelling and repair, applied in the order given:\n"
+	    "  --detrend M           subtract the least-squares mean, plane or quadratic\n"
+	    "                        over the valid points (plane, quadratic: periodic = 0)\n"
+	    "  --align-rows M        per scan line (row) remove its median, mean or plane\n"
+	    "  --fill                fill missing points harmonically (Laplace)\n"
+	    "  --crop X0:X1,Y0:Y1    keep points X0 <= i < X1, Y0 <= j < Y1\n"
+	    "  --resample D[xD]      new spacing: spectral on periodic grids, cubic\n"
+	    "                        splines on finite patches\n"
+	    "  --transpose           swap x and y\n"
+	    "  --filled-mask FILE    write a mask of the points --fill filled\n"
+	    "  then, in this order:\n"
 	    "  -w W                  warp (Eq. 4): W > 0 blunts the peaks (maxima of h)\n"
 	    "                        and sharpens the valleys, W < 0 the opposite\n"
 	    "  --hmin H, --hmax H    warp bounds (default 2 min h - max h, 2 max h - min h)\n"
@@ -57,8 +91,93 @@ static const struct option longopts[] = {
 	{ "carve-width", required_argument, NULL, OPT_CARVE_WIDTH },
 	{ "carve-rough", required_argument, NULL, OPT_CARVE_ROUGH },
 	{ "carve-seed", required_argument, NULL, OPT_CARVE_SEED },
+	{ "detrend", required_argument, NULL, OPT_DETREND },
+	{ "align-rows", required_argument, NULL, OPT_ALIGN_ROWS },
+	{ "fill", no_argument, NULL, OPT_FILL },
+	{ "filled-mask", required_argument, NULL, OPT_FILLED_MASK },
+	{ "crop", required_argument, NULL, OPT_CROP },
+	{ "resample", required_argument, NULL, OPT_RESAMPLE },
+	{ "transpose", no_argument, NULL, OPT_TRANSPOSE },
 	{ NULL, 0, NULL, 0 }
 };
+
+/* "X0:X1,Y0:Y1", non-negative integers. */
+static int
+parse_crop(struct tool *t, const char *arg, struct step *st)
+{
+	unsigned long long v[4];
+	int used = 0;
+
+	if (sscanf(arg, "%llu:%llu,%llu:%llu%n", &v[0], &v[1], &v[2], &v[3],
+	    &used) != 4 || arg[used] != '\0' || strchr(arg, '-') != NULL) {
+		tool_bad(t, "--crop %s: want X0:X1,Y0:Y1 (point indices)", arg);
+		return -1;
+	}
+	if (!(v[0] < v[1] && v[2] < v[3])) {
+		tool_bad(t, "--crop %s: want X0 < X1 and Y0 < Y1", arg);
+		return -1;
+	}
+	st->x0 = (size_t)v[0];
+	st->x1 = (size_t)v[1];
+	st->y0 = (size_t)v[2];
+	st->y1 = (size_t)v[3];
+	return 0;
+}
+
+/* Apply one step; the grid may be replaced. */
+static rc_grid *
+apply(const struct tool *t, rc_grid *g, const struct step *st,
+    const char *filled_mask)
+{
+	rc_grid *n = NULL;
+	rc_err err;
+
+	switch (st->op) {
+	case OPT_DETREND:
+		if (rc_detrend(g, (enum rc_detrend)st->mode, NULL, &err) != 0)
+			tool_fail(t, "--detrend: %s", err.msg);
+		return g;
+	case OPT_ALIGN_ROWS:
+		if (rc_align_rows(g, (enum rc_align)st->mode, &err) != 0)
+			tool_fail(t, "--align-rows: %s", err.msg);
+		return g;
+	case OPT_FILL: {
+		unsigned char *mask = NULL;
+		size_t nf;
+		if (rc_fill_harmonic(g, filled_mask ? &mask : NULL, &nf, &err) != 0)
+			tool_fail(t, "--fill: %s", err.msg);
+		if (filled_mask != NULL) {
+			rc_grid *m = rc_grid_new(g->nx, g->ny, g->lx, g->ly, &err);
+			if (m == NULL)
+				tool_fail(t, "%s", err.msg);
+			m->kind = RC_KIND_MASK;
+			memcpy(m->unit, g->unit, sizeof(m->unit));
+			m->periodic = g->periodic;
+			for (size_t k = 0; k < rc_grid_size(m); k++)
+				m->z[k] = mask != NULL && mask[k];
+			tool_write_grid(t, m, filled_mask);
+			rc_grid_free(m);
+		}
+		free(mask);
+		if (!t->quiet && nf > 0)
+			tool_warn(t, "--fill: %zu missing points filled", nf);
+		return g;
+	}
+	case OPT_CROP:
+		n = rc_crop(g, st->x0, st->x1, st->y0, st->y1, &err);
+		break;
+	case OPT_RESAMPLE:
+		n = rc_resample(g, st->dx, st->dy, &err);
+		break;
+	case OPT_TRANSPOSE:
+		n = rc_transpose(g, &err);
+		break;
+	}
+	if (n == NULL)
+		tool_fail(t, "%s", err.msg);
+	rc_grid_free(g);
+	return n;
+}
 
 int
 main(int argc, char **argv)
@@ -67,7 +186,10 @@ main(int argc, char **argv)
 	const char *in = NULL, *carve_mask = NULL;
 	double w = 0, hmin = 0, hmax = 0, rmsg = 0, depth = 0, width = 0, rough = 0;
 	long carve_seed = 1;
-	int have_rough_opts = 0;
+	int have_rough_opts = 0, have_fill = 0;
+	struct step steps[MAX_STEPS];
+	size_t nsteps = 0;
+	const char *filled_mask = NULL;
 	int have_w = 0, have_hmin = 0, have_hmax = 0, flip = 0, opt;
 	rc_grid *g;
 	rc_err err;
@@ -125,6 +247,35 @@ main(int argc, char **argv)
 			    carve_seed < 0)
 				tool_bad(&t, "--carve-seed %s: must be >= 0", optarg);
 			break;
+		case OPT_DETREND:
+		case OPT_ALIGN_ROWS:
+		case OPT_FILL:
+		case OPT_CROP:
+		case OPT_RESAMPLE:
+		case OPT_TRANSPOSE: {
+			struct step st;
+			memset(&st, 0, sizeof(st));
+			st.op = opt;
+			if (nsteps == MAX_STEPS) {
+				tool_bad(&t, "more than %d levelling steps", MAX_STEPS);
+				break;
+			}
+			if (opt == OPT_DETREND && (st.mode = rc_detrend_parse(optarg)) < 0)
+				tool_bad(&t, "--detrend %s: want mean, plane or quadratic", optarg);
+			if (opt == OPT_ALIGN_ROWS && (st.mode = rc_align_parse(optarg)) < 0)
+				tool_bad(&t, "--align-rows %s: want median, mean or plane", optarg);
+			if (opt == OPT_CROP && parse_crop(&t, optarg, &st) != 0)
+				break;
+			if (opt == OPT_RESAMPLE)
+				tool_length_pair(&t, "--resample", optarg, &st.dx, &st.dy);
+			if (opt == OPT_FILL)
+				have_fill = 1;
+			steps[nsteps++] = st;
+			break;
+		}
+		case OPT_FILLED_MASK:
+			filled_mask = optarg;
+			break;
 		case OPT_CARVE_WIDTH:
 			if (tool_double(&t, "--carve-width", optarg, &width) == 0 &&
 			    !(width > 0))
@@ -150,8 +301,15 @@ main(int argc, char **argv)
 		tool_bad(&t, "--carve-rough, --carve-seed: only with --carve");
 	if (have_hmin && have_hmax && !(hmin < hmax))
 		tool_bad(&t, "--hmin %g, --hmax %g: need hmin < hmax", hmin, hmax);
+	if (filled_mask != NULL && !have_fill)
+		tool_bad(&t, "--filled-mask: only with --fill");
 	tool_check_grid_path(&t, "-o", t.out);
+	if (filled_mask != NULL)
+		tool_check_grid_path(&t, "--filled-mask", filled_mask);
 	tool_output(&t, "-o", t.out ? t.out : "-", 0);
+	tool_output(&t, "--filled-mask", filled_mask, 0);
+	tool_not_input(&t, "--filled-mask", filled_mask, in);
+	tool_not_input(&t, "--filled-mask", filled_mask, carve_mask);
 	tool_output(&t, "--png", t.png, 1);
 	/* -o may be the input (written atomically after reading it), not the
 	 * mask; the preview is never either. */
@@ -161,7 +319,22 @@ main(int argc, char **argv)
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);
+	gsl_set_error_handler_off();	/* GSL reports through return codes */
 	g = tool_read_grid(&t, in);
+	for (size_t k = 0; k < nsteps; k++) {
+		g = apply(&t, g, &steps[k], filled_mask);
+		/* Levelling, cropping and resampling change the heights'
+		 * statistics: the generation target no longer holds. */
+		if (steps[k].op != OPT_TRANSPOSE && steps[k].op != OPT_FILL &&
+		    !(steps[k].op == OPT_DETREND && steps[k].mode == RC_DETREND_MEAN)) {
+			rc_grid_meta_unset(g, "rms_gradient");
+			rc_grid_meta_unset(g, "rms_height");
+		}
+	}
+	if (g->valid != NULL && (have_w || flip || carve_mask != NULL || rmsg > 0))
+		tool_fail(&t, "%s: the grid has missing points; -w, --flip, --carve "
+		    "and --rms-gradient need every point (add --fill first)",
+		    in ? in : "standard input");
 	if (have_w) {
 		double dmin, dmax;
 		rc_warp_default_bounds(g, &dmin, &dmax);

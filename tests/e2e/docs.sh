@@ -50,7 +50,14 @@ gfmd-solve -q -p 0.1,0.2 -o r32.tsv h32.surf
 gfmd-solve -q -p 0.1,0.2 -o r64.tsv h64.surf
 contact-stats -o cs.tsv r32.tsv r64.tsv
 surfstat -o st.tsv h32.surf
-for pair in gfmd-solve:r32.tsv surfstat:st.tsv contact-stats:cs.tsv; do
+surfstat --iso -o iso.tsv h32.surf
+surfstat --psd1d x -o p1.tsv h32.surf
+surfstat --acf --acf-half -o acf.tsv h32.surf
+surfstat --material-ratio 4 -o mr.tsv h32.surf
+surfgen -n 64 --lambda-r 0.25 --rolloff -o sa64.surf
+surfstat --fit -o fit.tsv sa64.surf
+for pair in gfmd-solve:r32.tsv surfstat:st.tsv contact-stats:cs.tsv \
+    surfstat:iso.tsv surfstat:p1.tsv surfstat:acf.tsv surfstat:mr.tsv surfstat:fit.tsv; do
 	t=${pair%%:*}; f=${pair#*:}
 	missing=$(head -n 1 "$f" | tr '\t' '\n' | grep -v -x -F -f meta.cols |
 	    while read -r c; do grep -q -w -- "$c" "$RC_TOP/man/man1/$t.1" || printf '%s ' "$c"; done)

@@ -1,0 +1,87 @@
+/* fit.h - the self-affine model of Eq. 2 of Wang & Mueser (2020), as
+ * surfgen makes it (synth.h), fitted to the spectrum of a surface:
+ *   C(q) = C_r (q / q_r)^(-2 - 2H)   for q_r <= q < q_s,
+ *   C(q) = C_r (roll-off) or 0       for q < q_r,      0 for q >= q_s,
+ * so that hrms^2 = int d^2q C(q) = 2 pi C_r q_r^2 [ f_roll / 2
+ *   + (1 - (q_s/q_r)^(-2H)) / (2H) ].
+ *
+ * The method (piecewise, each step stated):
+ * 1. The 2D spectrum (windowed like surfstat --psd: Hann by default on a
+ *    finite patch) restricted to the fit range q_min <= |q| <= q_max.  A
+ *    mode holds power if C > 1e-20 max C (below that is FFT round-off).  If
+ *    modes without power lie above every mode with power, the spectrum has
+ *    a sharp cutoff: q_s is the midpoint between the last mode with power
+ *    and the first without, its error half that gap (q_s_from = cutoff).
+ *    Otherwise q_s is the upper end of the range (q_s_from = range): a
+ *    measurement's spectrum runs on to its resolution, and the fit can
+ *    only say the power law holds that far.  Likewise at the low end: modes
+ *    without power below every mode with power fix q_r the same way and
+ *    mean no roll-off (C = 0 below q_r).
+ * 2. The radial C(q) (log bins) inside the range, without the bins within
+ *    a bin width of a detected cutoff (they average across the edge).
+ * 3. ln C against ln q: without a low cutoff, a hinge (plateau below q_r,
+ *    power law above) is searched over 200 positions between the first
+ *    and last bin by linear least squares, then refined with GSL's
+ *    nonlinear least squares (gsl_multifit_nlinear, trust region) for
+ *    ln C_r, H and ln q_r; the plateau is accepted (rolloff = 1,
+ *    q_r_from = fit) if it halves the residual sum of squares of a pure
+ *    power law and has at least 2 bins on each side.  Otherwise a straight
+ *    line (gsl_multifit_linear) gives ln C_r and H, with q_r from the low
+ *    cutoff, or, if there is none, the lowest q of the range (q_r_from =
+ *    range, rolloff = 0: the roll-off lies below what was measured).
+ *    Every bin is weighted by its number of modes (the variance of ln C
+ *    of a bin of independent modes falls as 1/modes).  Standard errors
+ *    are the covariance of the fit scaled by the residual variance;
+ *    hrms's by propagation through the formula above.
+ * Short wavelengths measured by a scanning probe are often unreliable
+ * (tip convolution, noise): q_max = 2 pi / (the shortest reliable
+ * wavelength) excludes them; see surfstat(1).  On a finite patch q_max
+ * defaults to pi / (2 max(dx, dy)), wavelengths of 4 spacings and more
+ * (the window's leakage, and the transfer function of most instruments,
+ * make the last octave unreliable); on a periodic grid to no bound.
+ */
+#ifndef RC_FIT_H
+#define RC_FIT_H
+/* (surfgen --like turns a fit into surfgen's parameters: H, lambda_r =
+ * 2 pi / q_r, lambda_s = 2 pi / q_s, rolloff and rms height hrms.) */
+
+#include <stddef.h>
+#include "fft.h"
+#include "grid.h"
+#include "psd.h"
+
+typedef struct rc_fit_opts {
+	double q_min, q_max;	/* fit range; 0 = the default (below) */
+	double bins_per_decade;	/* radial bins (default 10) */
+	enum rc_window window;	/* RC_WINDOW_AUTO as surfstat --psd */
+} rc_fit_opts;
+
+typedef struct rc_fit {
+	double H, H_err;
+	double q_r, q_r_err;
+	double q_s, q_s_err;
+	double c_r;		/* C(q_r) */
+	double hrms, hrms_err;	/* of the fitted model */
+	int rolloff;
+	const char *q_r_from, *q_s_from;	/* "fit", "cutoff", "range" */
+	double fit_q_min, fit_q_max;	/* the bins used */
+	size_t n_bins;
+	double rms_residual;	/* of ln C, weighted by the bins' modes */
+} rc_fit;
+
+void rc_fit_opts_default(rc_fit_opts *o);
+int rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
+    rc_fit *fit, rc_err *err);
+/* hrms of the model (formula above). */
+double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
+    int rolloff);
+
+#endif
+
+/* A fit as surfstat --fit writes it (TSV: a header line, one row), read
+ * back: the columns nx ny lx ly H q_r q_s hrms rolloff are required.
+ * Returns 1 and fills fit, nx, ny, lx, ly if the text is such a table; 0
+ * if it is not one (no lambda_r column in the first line: something
+ * else, e.g. a grid); -1 with err set if it is one but broken. */
+int rc_fit_table_parse(const char *text, rc_fit *fit, size_t *nx, size_t *ny,
+    double *lx, double *ly, rc_err *err);
