@@ -196,7 +196,7 @@ out:
 
 int
 rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
-    rc_fit *fit, rc_err *err)
+    rc_selfaffine_fit *fit, rc_err *err)
 {
 	rc_grid *s2d = NULL;
 	rc_psd_bin *b = NULL;
@@ -389,7 +389,7 @@ field(const char *line, size_t k, char *buf, size_t len)
 }
 
 int
-rc_fit_table_parse(const char *text, rc_fit *fit, size_t *nx, size_t *ny,
+rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t *ny,
     double *lx, double *ly, rc_err *err)
 {
 	static const char *need[] = { "nx", "ny", "lx", "ly", "H", "q_r", "q_s",

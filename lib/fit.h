@@ -56,7 +56,7 @@ typedef struct rc_fit_opts {
 	enum rc_window window;	/* RC_WINDOW_AUTO as surfstat --psd */
 } rc_fit_opts;
 
-typedef struct rc_fit {
+typedef struct rc_selfaffine_fit {
 	double H, H_err;
 	double q_r, q_r_err;
 	double q_s, q_s_err;
@@ -67,11 +67,11 @@ typedef struct rc_fit {
 	double fit_q_min, fit_q_max;	/* the bins used */
 	size_t n_bins;
 	double rms_residual;	/* of ln C, weighted by the bins' modes */
-} rc_fit;
+} rc_selfaffine_fit;
 
 void rc_fit_opts_default(rc_fit_opts *o);
 int rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
-    rc_fit *fit, rc_err *err);
+    rc_selfaffine_fit *fit, rc_err *err);
 /* hrms of the model (formula above). */
 double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
     int rolloff);
@@ -83,5 +83,5 @@ double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
  * Returns 1 and fills fit, nx, ny, lx, ly if the text is such a table; 0
  * if it is not one (no lambda_r column in the first line: something
  * else, e.g. a grid); -1 with err set if it is one but broken. */
-int rc_fit_table_parse(const char *text, rc_fit *fit, size_t *nx, size_t *ny,
+int rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t *ny,
     double *lx, double *ly, rc_err *err);

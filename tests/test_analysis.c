@@ -551,7 +551,7 @@ static void
 test_fit(void)
 {
 	rc_fit_opts o;
-	rc_fit f;
+	rc_selfaffine_fit f;
 	rc_err err;
 	rc_grid *g;
 	double lr = 0.25, ls = 0.02, qr = 2 * M_PI / lr, qs = 2 * M_PI / ls;

@@ -63,7 +63,7 @@ static const struct option longopts[] = {
 
 /* The fit of --like FILE: a fit table, else a surface fitted here. */
 static void
-load_like(struct tool *t, const char *path, rc_fit *f, size_t *nx, size_t *ny,
+load_like(struct tool *t, const char *path, rc_selfaffine_fit *f, size_t *nx, size_t *ny,
     double *lx, double *ly)
 {
 	FILE *fp = fopen(path, "rb");
@@ -139,7 +139,7 @@ main(int argc, char **argv)
 		    "height from the fit; -H, --lambda-r, --lambda-s, --rolloff, "
 		    "--rms-gradient, --rms-height and --type do not go with it");
 	if (like != NULL) {
-		rc_fit f;
+		rc_selfaffine_fit f;
 		size_t nx, ny;
 		double lx, ly;
 		tool_not_input(&t, "-o", t.out, like);

@@ -396,7 +396,7 @@ static void
 fit_row(const struct tool *t, const rc_grid *g, rc_fft *fft,
     const rc_fit_opts *fo)
 {
-	rc_fit f;
+	rc_selfaffine_fit f;
 	rc_err err;
 	rc_row r;
 	struct out o;
