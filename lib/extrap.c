@@ -201,6 +201,32 @@ static int extrapolate(const double *eps_in, const double *y, size_t n,
 /* Fit y - y_finest and add y_finest back: the limit of constant data is
  * then exactly that constant (a full contact stays a_r = 1), and the fit
  * works on the small differences. */
+/* The error that a neglected next term d eps^(k+1) leaves in the
+ * one-term estimate through (a, b): d (b^k a^(k+1) - a^k b^(k+1)) /
+ * (b^k - a^k), per unit d. */
+static double
+next_order_residue(double a, double b, double k)
+{
+	double ak = pow(a, k), bk = pow(b, k);
+
+	return (bk * ak * a - ak * bk * b) / (bk - ak);
+}
+
+/* Which share of the difference between the estimates through (e1, e2)
+ * and (e2, e3) is the error of the finer one, if that next term is what
+ * both miss: e1 / (e3 - e1) for the linear model, 1/3 for halvings.
+ * Measured (bench/accuracy/coverage.sh): with the whole difference as
+ * the error, a nominal one-sigma interval covered 90% of 48 surfaces;
+ * this share is what brings it to about 68%. */
+static double
+next_order_share(double e1, double e2, double e3, double k)
+{
+	double fine = next_order_residue(e1, e2, k);
+	double coarse = next_order_residue(e2, e3, k);
+
+	return fine != coarse ? fabs(fine / (fine - coarse)) : 1;
+}
+
 int
 rc_extrapolate(const double *eps, const double *y, size_t n,
     const rc_extrap_opts *o, rc_fit *fit, double *weight, rc_err *err)
@@ -322,6 +348,9 @@ extrapolate(const double *eps_in, const double *y, size_t n,
 		    err) != 0)
 			goto out;
 		fit->err = fabs(f.value - g.value);
+		if (nk == 1)
+			fit->err *= next_order_share(eps[idx[0]], eps[idx[1]],
+			    eps[idx[2]], o->exponent[0]);
 	} else if (nk == 1)
 		fit->err = fabs(f.value - y[idx[0]]);
 	else {

@@ -76,10 +76,23 @@ test_quadratic(void)
 	test_int(rc_extrapolate(eps, y, 3, &lin, &f, w, &err), 0, "linear on quadratic data");
 	test_rel(f.value, a0 - d * eps[0] * eps[1], 1e-13,
 	    "linear Richardson error is -d e1 e2 (second order)");
-	/* The error estimate: difference of the pairs (1,2) and (2,3), which
-	 * is d e2 (e3 - e1) in closed form. */
-	test_rel(f.err, d * eps[1] * (eps[2] - eps[0]), 1e-12,
-	    "error estimate = difference of successive pair estimates");
+	/* The error estimate: the share e1/(e3 - e1) of the difference of
+	 * the pairs (1,2) and (2,3), d e2 (e3 - e1): exactly the true error
+	 * d e1 e2 when the next term is what the pairs miss. */
+	test_rel(f.err, d * eps[0] * eps[1], 1e-12,
+	    "error estimate = the true error on quadratic data");
+	test_rel(f.err, a0 - f.value, 1e-12,
+	    "error estimate equals estimate minus truth");
+	/* Not a halving: eps = 1/16, 1/10, 1/4 gives share e1/(e3 - e1). */
+	{
+		double e2[3] = { 0.0625, 0.1, 0.25 }, y2[3];
+		for (int i = 0; i < 3; i++)
+			y2[i] = a0 + c * e2[i] + d * e2[i] * e2[i];
+		test_int(rc_extrapolate(e2, y2, 3, &lin, &f, w, &err), 0,
+		    "linear on quadratic data, uneven eps");
+		test_rel(f.err, d * e2[0] * e2[1], 1e-12,
+		    "error estimate = true error for uneven eps");
+	}
 
 	/* Two terms, eps and eps^2, three points: exact. */
 	rc_extrap_opts quad = model(0, 2, 1, 2, RC_FIT_FINEST);

@@ -72,32 +72,48 @@ for est in "64 128" "128 256" "64 128 256"; do
 	done
 done
 
-# Coverage: per surface the reference of that seed; per ensemble the mean
-# of its seeds' references (their own error is 10-50x below the
-# estimates' and is neglected).
+# Coverage: per surface against the reference of that seed (the
+# extrapolation error alone; the reference's own error is 10-50x below
+# the estimates' and is neglected).  Per ensemble against the mean
+# reference of all the OTHER seeds, an independent sample of the same
+# population: the interval is then +- sqrt(err^2 + se_others^2), with
+# se_others the standard error of that mean.
 awk '
-	FILENAME ~ /ref.txt$/ { ra[$1 " " $2] = $3; rk[$1 " " $2] = $5; next }
+	FILENAME ~ /ref.txt$/ {
+		ra[$1 " " $2] = $3; rk[$1 " " $2] = $5
+		if (!($1 in seen)) { seen[$1] = 1; seeds[++ns] = $1 }
+		next
+	}
 	{
-		e = $1; lvl = $2; p = $4
+		e = $1; lvl = $2; p = $4; extra_a = extra_k = 0
 		if (lvl == "surface") { key = $3 " " p; ref_a = ra[key]; ref_k = rk[key] }
 		else {
+			delete in_grp
 			split(substr($3, index($3, ":") + 1), sd, ",")
-			ref_a = ref_k = 0; m = 0
-			for (i in sd) { ref_a += ra[sd[i] " " p]; ref_k += rk[sd[i] " " p]; m++ }
-			ref_a /= m; ref_k /= m
+			for (i in sd) in_grp[sd[i]] = 1
+			sa = sa2 = sk = sk2 = m = 0
+			for (i = 1; i <= ns; i++) {
+				if (seeds[i] in in_grp) continue
+				va = ra[seeds[i] " " p]; vk = rk[seeds[i] " " p]
+				sa += va; sa2 += va * va; sk += vk; sk2 += vk * vk; m++
+			}
+			ref_a = sa / m; ref_k = sk / m
+			extra_a = m > 1 ? (sa2 - m * ref_a * ref_a) / (m - 1) / m : 0
+			extra_k = m > 1 ? (sk2 - m * ref_k * ref_k) / (m - 1) / m : 0
 		}
+		ea = sqrt($6 * $6 + extra_a); ek = sqrt($8 * $8 + extra_k)
 		id = e " " lvl
 		n[id]++
 		da = $5 - ref_a; if (da < 0) da = -da
 		dk = $7 - ref_k; if (dk < 0) dk = -dk
-		if (da <= $6) ca[id]++
-		if (dk <= $8) ck[id]++
-		ra_sum[id] += da / ref_a; re_sum[id] += $6 / ref_a
-		z[id] = z[id] " " ($6 > 0 ? da / $6 : 1e9)
+		if (da <= ea) ca[id]++
+		if (dk <= ek) ck[id]++
+		ra_sum[id] += da / ref_a; re_sum[id] += ea / ref_a
+		z[id] = z[id] " " (ea > 0 ? da / ea : 1e9)
 		order[id] = ++k
 	}
 	END {
-		print "eps_c\tlevel\tn\tcoverage_a_r\tcoverage_kappa\tmean_abs_err_rel\tmean_a_r_err_rel\tmedian_err_over_a_r_err"
+		print "eps_c\tlevel\tn\tcoverage_a_r\tcoverage_kappa\tmean_abs_err_rel\tmean_interval_rel\tmedian_err_over_interval"
 		for (id in n) {
 			m = split(z[id], v, " ")
 			for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (v[j] < v[i]) { t = v[i]; v[i] = v[j]; v[j] = t }
@@ -106,5 +122,7 @@ awk '
 			printf "%s\t%s\t%d\t%.2f\t%.2f\t%.3g\t%.3g\t%.3g\n", w[1], w[2], n[id],
 			    ca[id] / n[id], ck[id] / n[id], ra_sum[id] / n[id], re_sum[id] / n[id], med
 		}
-	}' "$OUT/ref.txt" "$OUT/est.txt" | sort -t "$(printf '\t')" -k2,2r -k1,1 >"$OUT/coverage.tsv"
+	}' "$OUT/ref.txt" "$OUT/est.txt" >"$OUT/coverage.tmp"
+{ head -n 1 "$OUT/coverage.tmp"; tail -n +2 "$OUT/coverage.tmp" | sort -k2,2r -k1,1; } >"$OUT/coverage.tsv"
+rm -f "$OUT/coverage.tmp"
 column -t -s "$(printf '\t')" "$OUT/coverage.tsv"

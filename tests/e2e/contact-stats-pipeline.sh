@@ -35,8 +35,18 @@ check "extrapolated a_r is closer to the 2x finer reference than raw n = 128" \
 # Raw values converge monotonically from above (coarse grids overestimate
 # the contact), and the 2x finer raw value lies between raw and limit.
 check "raw(128) > raw(256) > extrapolated" awk -v a="$raw128" -v b="$raw256" -v e="$ext" 'BEGIN { exit !(a > b && b > e) }'
-# The error estimate covers the distance to the reference.
-check "a_r_err covers |a_r - reference|" awk -v e="$ext" -v f="$ref" -v s="$(col ex.tsv a_r_err)" 'BEGIN { d = e - f; if (d < 0) d = -d; exit !(d <= s) }'
+# The error estimates are consistent: a_r_err is a one-sigma error (it
+# covers 69% of 48 surfaces in bench/accuracy/coverage.sh), the
+# reference's own a_r_err a bound (two grids); their difference lies
+# within twice the combined error.
+check "a_r and the reference agree within 2 combined errors" awk -v e="$ext" -v f="$ref" \
+    -v s="$(col ex.tsv a_r_err)" -v t="$(col ref.tsv a_r_err)" \
+    'BEGIN { d = e - f; if (d < 0) d = -d; exit !(d <= 2 * sqrt(s * s + t * t)) }'
+# ... and a_r_err is not the whole correction any more: with three grids
+# it is a third of the change between the two pair estimates, far below
+# the raw-to-extrapolated difference (about 1/25 of it here).
+check "a_r_err well below the whole correction" awk -v e="$ext" -v r="$raw128" \
+    -v s="$(col ex.tsv a_r_err)" 'BEGIN { d = r - e; exit !(s < d / 3) }'
 # Plausibility (issue 5): H = 0.8, p* = 0.05, moderate size: kappa between
 # Persson's sqrt(8/pi) = 1.596 and BGT's sqrt(2 pi) = 2.507.
 check_range "kappa between Persson and BGT" "$(col ex.tsv kappa)" 1.596 2.507
