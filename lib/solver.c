@@ -62,6 +62,22 @@ rc_method_name(enum rc_method m)
 	return "unknown";
 }
 
+const char *
+rc_boundary_name(enum rc_boundary b)
+{
+	return b == RC_BOUNDARY_FREE ? "free" : "periodic";
+}
+
+int
+rc_boundary_parse(const char *name)
+{
+	if (strcmp(name, "periodic") == 0)
+		return RC_BOUNDARY_PERIODIC;
+	if (strcmp(name, "free") == 0)
+		return RC_BOUNDARY_FREE;
+	return -1;
+}
+
 int
 rc_method_parse(const char *name)
 {
@@ -86,6 +102,22 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "tolerance must be positive and finite");
 		return NULL;
 	}
+	if (o->boundary != RC_BOUNDARY_PERIODIC && o->boundary != RC_BOUNDARY_FREE) {
+		rc_seterr(err, "unknown boundary kind %d", (int)o->boundary);
+		return NULL;
+	}
+#ifdef RC_MPI
+	if (o->boundary == RC_BOUNDARY_FREE) {
+		rc_seterr(err, "free boundaries are not in the MPI build");
+		return NULL;
+	}
+#endif
+	if (o->boundary == RC_BOUNDARY_FREE && o->method == RC_METHOD_FIRE) {
+		rc_seterr(err, "FIRE-GFMD has no free-boundary variant (its "
+		    "Fourier masses are those of the periodic operator); use the "
+		    "Polonsky-Keer CG for free boundaries");
+		return NULL;
+	}
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -104,8 +136,11 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->n = n = ind->nx * ind->ny;
 	s->lx = ind->lx;
 	s->ly = ind->ly;
-	if (rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    (enum rc_fft_effort)o->measure, err) != 0) {
+	s->free_bc = o->boundary == RC_BOUNDARY_FREE;
+	if ((s->free_bc ? rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
+	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) :
+	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
+	    (enum rc_fft_effort)o->measure, err)) != 0) {
 		free(s);
 		return NULL;
 	}
@@ -120,6 +155,13 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	}
 	memcpy(s->height, ind->z, n * sizeof(double));
 	memset(s->sigma, 0, n * sizeof(double));
+	s->top = -HUGE_VAL;
+	for (size_t k = 0; k < n; k++)
+		if (s->height[k] > s->top)
+			s->top = s->height[k];
+#ifdef RC_MPI
+	rc_mpi_max(&s->top, 1);
+#endif
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
 	    rc__cg_alloc(s, err)) != 0) {
 		rc_solver_free(s);
@@ -136,6 +178,8 @@ rc_solver_free(rc_solver *s)
 	if (s->u != s->el.fft.real)
 		fftw_free(s->u);
 	rc_elastic_free(&s->el);
+	rc_halfspace_release(&s->fel);
+	fftw_free(s->scratch);
 	fftw_free(s->height);
 	fftw_free(s->sigma);
 	free(s->contact);
@@ -163,6 +207,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	double t0 = rc_clock();
 	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
+	unsigned long padded = s->fel.n_pairs;
 	int r;
 
 	memset(res, 0, sizeof(*res));
@@ -176,7 +221,9 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		return -1;
 	s->last_pressure = p;
 	res->seconds = rc_clock() - t0;
-	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
+	/* Free: pairs of the padded 2nx x 2ny transform. */
+	res->fft_pairs = s->free_bc ? (double)(s->fel.n_pairs - padded) :
+	    0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
 	return r;
 }
@@ -240,16 +287,38 @@ rc_solver_mean_gap(const rc_solver *s)
 #endif
 }
 
+double
+rc_solver_approach(const rc_solver *s)
+{
+	size_t k;
+	double sum = 0;
+
+	if (s->free_bc)
+		return s->top - s->level;
+#pragma omp parallel for reduction(+:sum) schedule(static)
+	for (k = 0; k < s->n; k++)
+		sum += s->u[k];
+#ifdef RC_MPI
+	rc_mpi_sum(&sum, 1);
+	return s->top - sum / (double)s->el.n;
+#else
+	return s->top - sum / (double)s->n;
+#endif
+}
+
 size_t
 rc_solver_bytes(const rc_solver *s)
 {
-	size_t b = sizeof(*s) + rc_elastic_bytes(&s->el);
+	size_t b = sizeof(*s) + (s->free_bc ? rc_halfspace_bytes(&s->fel) :
+	    rc_elastic_bytes(&s->el));
 	b += s->n * (2 * sizeof(double) + 1);	/* height, sigma, contact */
 	if (s->u != s->el.fft.real)
 		b += s->n * sizeof(double);
 	if (s->fire_vel)
 		b += s->n * sizeof(double);
 	if (s->cg_dir)
+		b += s->n * sizeof(double);
+	if (s->scratch)
 		b += s->n * sizeof(double);
 	return b;
 }

@@ -5,13 +5,19 @@
 #define RC_SOLVER_IMPL_H
 
 #include "elastic.h"
+#include "elastic_free.h"
 #include "solver.h"
 
 struct rc_solver {
 	rc_solver_opts opts;
 	size_t nx, ny, n;
 	double lx, ly;
-	rc_elastic el;
+	rc_elastic el;		/* periodic operator (unused when free) */
+	rc_halfspace fel;	/* free boundaries: the padded compliance */
+	int free_bc;		/* opts.boundary == RC_BOUNDARY_FREE */
+	double level;		/* free CG: rigid level c of the solution */
+	double top;		/* max h */
+	double *scratch;	/* free CG: n doubles for G t */
 	double *height;		/* indenter h, n */
 	double *u;		/* elastic surface height; FIRE: el.fft.real */
 	double *sigma;		/* contact pressure, n */
