@@ -72,8 +72,8 @@ compliance(rc_solver *s, const double *x, double *out)
 }
 
 /* The stiffness scale of the convergence bound (see the top). */
-static double
-stiffness_max(const rc_solver *s)
+double
+rc__stiffness_max(const rc_solver *s)
 {
 	double dx = s->lx / (double)s->nx, dy = s->ly / (double)s->ny;
 
@@ -83,8 +83,8 @@ stiffness_max(const rc_solver *s)
 }
 
 /* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */
-static size_t
-level(const rc_solver *s, double *c)
+size_t
+rc__level(const rc_solver *s, double *c)
 {
 	size_t k, on = 0;
 	double sum = 0;
@@ -102,15 +102,15 @@ level(const rc_solver *s, double *c)
 
 /* Residual of (u', sigma); leaves u' in s->u, the contact set and the
  * elastic energy.  s->u holds G sigma on entry. */
-static double
-final_check_free(rc_solver *s, double p)
+double
+rc__final_check_free(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
 	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
 	double *u = s->u;
 	const double *h = s->height, *sigma = s->sigma;
 
-	level(s, &c);
+	rc__level(s, &c);
 	s->level = c;
 #pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
 	for (k = 0; k < n; k++) {
@@ -123,7 +123,7 @@ final_check_free(rc_solver *s, double p)
 		u[k] = w;
 	}
 	s->energy = 0.5 * sum_e / (double)n;
-	force = stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
+	force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
 	load = fabs(sum_s / (double)n - p) / p;
 	return force > load ? force : load;
 }
@@ -137,8 +137,8 @@ final_check(rc_solver *s, double p)
 	const double *h = s->height, *sigma = s->sigma;
 
 	if (s->free_bc)
-		return final_check_free(s, p);
-	level(s, &c);
+		return rc__final_check_free(s, p);
+	rc__level(s, &c);
 #pragma omp parallel for schedule(static)
 	for (k = 0; k < n; k++) {
 		double v = u[k] + c;
@@ -220,7 +220,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	size_t n = s->n, k, n_contact = 0;
 	double *sigma = s->sigma, *disp = s->u, *t = s->cg_dir;
 	double *r = s->free_bc ? s->scratch : e->fft.real;
-	double k_max = stiffness_max(s);
+	double k_max = rc__stiffness_max(s);
 	const double *h = s->height;
 	double g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
 	double g00 = 0;		/* G_00, computed when first needed */
@@ -242,7 +242,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			since_refresh = 0;
 		}
 		since_refresh++;
-		n_contact = level(s, &c);
+		n_contact = rc__level(s, &c);
 		if (n_contact == 0) {
 			/* Cannot happen with sum sigma = p N > 0; guard anyway. */
 			break;

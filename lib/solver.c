@@ -112,12 +112,6 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		return NULL;
 	}
 #endif
-	if (o->boundary == RC_BOUNDARY_FREE && o->method == RC_METHOD_FIRE) {
-		rc_seterr(err, "FIRE-GFMD has no free-boundary variant (its "
-		    "Fourier masses are those of the periodic operator); use the "
-		    "Polonsky-Keer CG for free boundaries");
-		return NULL;
-	}
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -137,10 +131,14 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->lx = ind->lx;
 	s->ly = ind->ly;
 	s->free_bc = o->boundary == RC_BOUNDARY_FREE;
-	if ((s->free_bc ? rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
-	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) :
+	/* Free boundaries: the padded compliance; FIRE on them also uses
+	 * the periodic stiffness as its inverse mass (fire_free.c). */
+	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
+	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) != 0) ||
+	    ((!s->free_bc || o->method == RC_METHOD_FIRE) &&
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    (enum rc_fft_effort)o->measure, err)) != 0) {
+	    (enum rc_fft_effort)o->measure, err) != 0)) {
+		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;
 	}
@@ -163,7 +161,11 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	rc_mpi_max(&s->top, 1);
 #endif
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
-	    rc__cg_alloc(s, err)) != 0) {
+	    rc__cg_alloc(s, err)) != 0 || (s->free_bc && s->scratch == NULL &&
+	    (s->scratch = fftw_alloc_real(n)) == NULL)) {
+		if (s->free_bc && s->scratch == NULL)
+			rc_seterr(err, "out of memory (asked for %zu bytes)",
+			    n * sizeof(double));
 		rc_solver_free(s);
 		return NULL;
 	}
@@ -213,7 +215,9 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	memset(res, 0, sizeof(*res));
 	if (!(p > 0) || !isfinite(p))
 		return rc_seterr(err, "pressure must be positive and finite");
-	if (s->opts.method == RC_METHOD_FIRE)
+	if (s->opts.method == RC_METHOD_FIRE && s->free_bc)
+		r = rc__fire_free_solve(s, p, res, err);
+	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
 	else
 		r = rc__cg_solve(s, p, res, err);
@@ -221,9 +225,12 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		return -1;
 	s->last_pressure = p;
 	res->seconds = rc_clock() - t0;
-	/* Free: pairs of the padded 2nx x 2ny transform. */
-	res->fft_pairs = s->free_bc ? (double)(s->fel.n_pairs - padded) :
-	    0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
+	/* Free: pairs of the padded 2nx x 2ny transform (FIRE adds its
+	 * unpadded ones, fire_free.c). */
+	if (s->free_bc)
+		res->fft_pairs += (double)(s->fel.n_pairs - padded);
+	else
+		res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
 	return r;
 }
@@ -309,8 +316,8 @@ rc_solver_approach(const rc_solver *s)
 size_t
 rc_solver_bytes(const rc_solver *s)
 {
-	size_t b = sizeof(*s) + (s->free_bc ? rc_halfspace_bytes(&s->fel) :
-	    rc_elastic_bytes(&s->el));
+	size_t b = sizeof(*s) + rc_halfspace_bytes(&s->fel) +
+	    rc_elastic_bytes(&s->el);
 	b += s->n * (2 * sizeof(double) + 1);	/* height, sigma, contact */
 	if (s->u != s->el.fft.real)
 		b += s->n * sizeof(double);

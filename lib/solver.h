@@ -31,8 +31,8 @@ enum rc_boundary {
 
 typedef struct rc_solver_opts {
 	enum rc_method method;
-	/* Free boundaries: CG only (FIRE-GFMD has no free-boundary variant
-	 * here; rc_solver_new refuses it), grids of at least 2 x 2. */
+	/* Free boundaries: grids of at least 2 x 2; FIRE runs on pressures
+	 * there (fire_free.c). */
 	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
 	double tol;		/* scale-free convergence tolerance (see the .c) */

@@ -150,8 +150,7 @@ usage(void)
 "                       isolated patch of half space (default: the grid's\n"
 "                       periodic flag)\n"
 "  -E MODULUS           contact modulus E* (default 1)\n"
-"  --method fire|cg     FIRE-GFMD (default; periodic only) or Polonsky-Keer\n"
-"                       CG (the default for free boundaries)\n"
+"  --method fire|cg     FIRE-GFMD (default) or Polonsky-Keer CG\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
@@ -301,12 +300,9 @@ main(int argc, char **argv)
 			    h->ny);
 	}
 	/* Free boundaries (issue 16): the grid's periodic flag decides unless
-	 * --boundary is given; FIRE has no free variant, so CG is the default
-	 * there. */
+	 * --boundary is given. */
 	o.so.boundary = o.boundary >= 0 ? (enum rc_boundary)o.boundary :
 	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
-	if (o.so.boundary == RC_BOUNDARY_FREE && !o.given_method)
-		o.so.method = RC_METHOD_CG;
 	/* The analysis plan lives as long as the solver; --fd and free
 	 * boundaries need none. */
 	memset(&fft, 0, sizeof(fft));
