@@ -1,7 +1,8 @@
 /* contact.h - analysis of a contact field: contact fraction, contact
  * line, patches, and the indenter's gradients averaged over the contact.
  *
- * Input: the indenter heights h (a periodic grid) and a contact mask of
+ * Input: the indenter heights h (a periodic grid, or a finite patch: see
+ * opts.nonperiodic below) and a contact mask of
  * nx*ny bytes, 1 where the point is in contact.  Everything is O(N) and
  * only what the flags ask for is computed.  Neighbours are the four
  * nearest ones with periodic wrap-around; on a line grid (ny = 1, or

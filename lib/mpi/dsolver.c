@@ -73,9 +73,9 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 	memset(s->sigma, 0, (n + 1) * sizeof(double));
 	/* max h, the reference of rc_solver_approach */
 	s->top = -HUGE_VAL;
-	for (size_t k = 0; k < n; k++)
-		if (height[k] > s->top)
-			s->top = height[k];
+	for (size_t i = 0; i < n; i++)
+		if (height[i] > s->top)
+			s->top = height[i];
 	rc_mpi_max(&s->top, 1);
 	s->u = fftw_alloc_real(n + 1);
 	s->fire_vel = fftw_alloc_real(n + 1);
