@@ -100,8 +100,9 @@ rc__level(const rc_solver *s, double *c)
 	return on;
 }
 
-/* Residual of (u', sigma); leaves u' in s->u, the contact set and the
- * elastic energy.  s->u holds G sigma on entry. */
+/* Free boundaries: the measure of the top of this file for (u', sigma);
+ * leaves u' in s->u, the contact set, the level c and the elastic energy
+ * (1/2) <sigma w>.  s->u holds w = G sigma on entry. */
 double
 rc__final_check_free(rc_solver *s, double p)
 {
@@ -114,13 +115,13 @@ rc__final_check_free(rc_solver *s, double p)
 	s->level = c;
 #pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
 	for (k = 0; k < n; k++) {
-		double v = u[k] + c, w = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
+		double v = u[k] + c, up = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
 
 		s->contact[k] = sigma[k] > 0;
-		sum_d2 += (w - v) * (w - v);
+		sum_d2 += (up - v) * (up - v);
 		sum_s += sigma[k];
 		sum_e += sigma[k] * u[k];
-		u[k] = w;
+		u[k] = up;
 	}
 	s->energy = 0.5 * sum_e / (double)n;
 	force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
@@ -128,6 +129,8 @@ rc__final_check_free(rc_solver *s, double p)
 	return force > load ? force : load;
 }
 
+/* Residual of (u', sigma); leaves u' in s->u, the contact set and the
+ * elastic energy.  s->u holds G sigma on entry. */
 static double
 final_check(rc_solver *s, double p)
 {

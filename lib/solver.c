@@ -26,6 +26,11 @@
  * (FIRE iterations cost two FFT pairs, CG's one or two: fire.c, pkcg.c.)
  * The default 1e-6 leaves a margin of two decades over the first
  * tolerance at which every contact point is right.
+ *
+ * Free boundaries (opts.boundary): the padded compliance of
+ * elastic_free.h replaces K and G; without K the measure is the gap
+ * bound of pkcg.c for both methods (FIRE then runs on the pressures,
+ * fire_free.c).
  */
 #include "solver_impl.h"
 
