@@ -12,6 +12,13 @@
  * process so far, which includes the indenter and the timing plan); and
  * |a_r - a_r_ref| / a_r_ref against a FIRE solve at tol 1e-10 (FIRE and CG
  * agree at that tolerance: tests/test_solver.c).
+ *
+ * Both boundary kinds side by side (column boundary): free boundaries
+ * (lib/elastic_free.c) solve the same map as an isolated patch; their
+ * fft_pairs count pairs of the padded 2n x 2n transform (FIRE's unpadded
+ * pairs as a quarter each, lib/fire_free.c), pair_seconds is then a
+ * padded pair, and the reference is a free FIRE solve at 1e-10.  Free
+ * boundaries stop at 1024^2 (a padded 2048^2) unless BENCH_BIG=1.
  */
 #include <math.h>
 #include <stdio.h>
@@ -74,6 +81,56 @@ contact_fraction(const rc_solver *s, size_t nn)
 	return (double)nc / (double)nn;
 }
 
+/* One boundary kind on the map g of n x n points: the reference, then
+ * both methods; a row each. */
+static int
+bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
+{
+	size_t nn = n * n;
+	rc_err err;
+	double pair, ref;
+	rc_solver_opts o;
+	rc_solver *s;
+	rc_solve_result r;
+	int m;
+
+	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n);
+	rc_solver_defaults(&o);
+	o.method = RC_METHOD_FIRE;
+	o.boundary = b;
+	o.tol = 1e-10;
+	if ((s = rc_solver_new(g, &o, &err)) == NULL ||
+	    rc_solver_solve(s, 0.05, &r, &err) < 0) {
+		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		return -1;
+	}
+	ref = contact_fraction(s, nn);
+	rc_solver_free(s);
+	for (m = 0; m < 2; m++) {
+		double ar, iters;
+
+		rc_solver_defaults(&o);
+		o.method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
+		o.boundary = b;
+		if ((s = rc_solver_new(g, &o, &err)) == NULL ||
+		    rc_solver_solve(s, 0.05, &r, &err) < 0) {
+			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+			return -1;
+		}
+		ar = contact_fraction(s, nn);
+		iters = (double)(r.iterations ? r.iterations : 1);
+		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.1f\t%.1f\t%.6f\t%.1e\n",
+		    n, rc_boundary_name(b), rc_method_name(o.method), r.iterations,
+		    r.fft_pairs, r.fft_pairs / iters, r.seconds, pair,
+		    r.seconds / iters / pair,
+		    (double)rc_solver_bytes(s) / (double)nn,
+		    peak_rss_bytes() / (double)nn, ar, fabs(ar - ref) / ref);
+		fflush(stdout);
+		rc_solver_free(s);
+	}
+	return 0;
+}
+
 int
 main(void)
 {
@@ -84,18 +141,13 @@ main(void)
 		ns = 5;
 	printf("# gfmd-solve solvers, %d threads, p* = 0.05, H = 0.8, lambda_r = L/2,"
 	    " lambda_s = L/64\n", threads);
-	printf("n\tmethod\titerations\tfft_pairs\tpairs_per_iter\tseconds\t"
+	printf("n\tboundary\tmethod\titerations\tfft_pairs\tpairs_per_iter\tseconds\t"
 	    "pair_seconds\titer_in_pairs\tbytes_solver\tbytes_rss\ta_r\ta_r_relerr\n");
 	for (z = 0; z < ns; z++) {
-		size_t n = sizes[z], nn = n * n;
+		size_t n = sizes[z];
 		rc_synth_params sp;
 		rc_grid *g;
 		rc_err err;
-		double pair, ref;
-		rc_solver_opts o;
-		rc_solver *s;
-		rc_solve_result r;
-		int m;
 
 		rc_synth_defaults(&sp);
 		sp.nx = sp.ny = n;
@@ -109,37 +161,10 @@ main(void)
 			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
 			return 1;
 		}
-		pair = fft_pair_seconds(n);
-		rc_solver_defaults(&o);
-		o.method = RC_METHOD_FIRE;
-		o.tol = 1e-10;
-		if ((s = rc_solver_new(g, &o, &err)) == NULL ||
-		    rc_solver_solve(s, 0.05, &r, &err) < 0) {
-			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		if (bench_boundary(g, n, RC_BOUNDARY_PERIODIC) != 0 ||
+		    ((n <= 1024 || ns == 5) &&
+		    bench_boundary(g, n, RC_BOUNDARY_FREE) != 0))
 			return 1;
-		}
-		ref = contact_fraction(s, nn);
-		rc_solver_free(s);
-		for (m = 0; m < 2; m++) {
-			double ar, iters;
-
-			rc_solver_defaults(&o);
-			o.method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
-			if ((s = rc_solver_new(g, &o, &err)) == NULL ||
-			    rc_solver_solve(s, 0.05, &r, &err) < 0) {
-				fprintf(stderr, "bench_gfmd: %s\n", err.msg);
-				return 1;
-			}
-			ar = contact_fraction(s, nn);
-			iters = (double)(r.iterations ? r.iterations : 1);
-			printf("%zu\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.1f\t%.1f\t%.6f\t%.1e\n",
-			    n, rc_method_name(o.method), r.iterations, r.fft_pairs,
-			    r.fft_pairs / iters, r.seconds, pair, r.seconds / iters / pair,
-			    (double)rc_solver_bytes(s) / (double)nn,
-			    peak_rss_bytes() / (double)nn, ar, fabs(ar - ref) / ref);
-			fflush(stdout);
-			rc_solver_free(s);
-		}
 		rc_grid_free(g);
 	}
 	return 0;

@@ -62,6 +62,24 @@ rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
 	return n_cl;
 }
 
+size_t
+rc_contact_line_open(const unsigned char *contact, size_t nx, size_t ny)
+{
+	size_t n_cl = 0;
+
+	#pragma omp parallel for reduction(+:n_cl) schedule(static)
+	for (size_t j = 0; j < ny; j++) {
+		const unsigned char *row = contact + j * nx;
+		for (size_t i = 0; i < nx; i++) {
+			if (!row[i])
+				continue;
+			n_cl += i == 0 || i + 1 == nx || j == 0 || j + 1 == ny ||
+			    !row[i - 1] || !row[i + 1] || !row[i - nx] || !row[i + nx];
+		}
+	}
+	return n_cl;
+}
+
 /* Masked sums of fft->real (squared or times (h - hbar_c)); rows are summed
  * first so round-off grows with nx + ny rather than nx * ny. */
 static double
@@ -136,6 +154,68 @@ fd_sums(const rc_grid *h, const unsigned char *contact, double hbar,
 	*dh_lap = sum_l;
 }
 
+/* Index of the centre of the 3-point second difference at i on n points
+ * without wrap-around (n >= 3). */
+static size_t
+interior(size_t i, size_t n)
+{
+	return i == 0 ? 1 : i + 1 == n ? n - 2 : i;
+}
+
+/* fd_sums on a finite patch (contact.h). */
+static void
+fd_sums_open(const rc_grid *h, const unsigned char *contact, double hbar,
+    double *grad2, double *dh_lap)
+{
+	size_t nx = h->nx, ny = h->ny;
+	double dx = h->lx / (double)nx, dy = h->ly / (double)ny;
+	double sum_g = 0, sum_l = 0;
+	const double *z = h->z;
+
+	#pragma omp parallel for reduction(+:sum_g, sum_l) schedule(static)
+	for (size_t j = 0; j < ny; j++) {
+		size_t up = j + 1 < ny ? j + 1 : j, down = j > 0 ? j - 1 : j;
+		double row_g = 0, row_l = 0;
+		for (size_t i = 0; i < nx; i++) {
+			size_t k = j * nx + i, right = i + 1 < nx ? i + 1 : i;
+			size_t left = i > 0 ? i - 1 : i;
+			double hx = 0, hy = 0, lap = 0;
+
+			if (contact != NULL && !contact[k])
+				continue;
+			if (right > left)
+				hx = (z[j * nx + right] - z[j * nx + left]) /
+				    ((double)(right - left) * dx);
+			if (up > down)
+				hy = (z[up * nx + i] - z[down * nx + i]) /
+				    ((double)(up - down) * dy);
+			if (nx >= 3) {
+				const double *c = z + j * nx + interior(i, nx);
+				lap += (c[1] - 2 * c[0] + c[-1]) / (dx * dx);
+			}
+			if (ny >= 3) {
+				const double *c = z + interior(j, ny) * nx + i;
+				lap += (c[nx] - 2 * c[0] + c[-(ptrdiff_t)nx]) / (dy * dy);
+			}
+			row_g += hx * hx + hy * hy;
+			row_l += (z[k] - hbar) * lap;
+		}
+		sum_g += row_g;
+		sum_l += row_l;
+	}
+	*grad2 = sum_g;
+	*dh_lap = sum_l;
+}
+
+double
+rc_contact_gbar_open(const rc_grid *h)
+{
+	double grad2, dh_lap;
+
+	fd_sums_open(h, NULL, 0, &grad2, &dh_lap);
+	return sqrt(grad2 / (double)rc_grid_size(h));
+}
+
 double
 rc_contact_gbar_fd(const rc_grid *h)
 {
@@ -147,7 +227,7 @@ rc_contact_gbar_fd(const rc_grid *h)
 
 static int
 gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
-    rc_fft *fft, int fd, rc_contact_stats *st, rc_err *err)
+    rc_fft *fft, int fd, int nonperiodic, rc_contact_stats *st, rc_err *err)
 {
 	rc_fft own;
 	size_t nx = h->nx, ny = h->ny;
@@ -157,8 +237,11 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 	if (n_c == 0)
 		return 0;	/* NaN: no contact to average over */
 	hbar = masked_sum_dh(NULL, h->z, 0, contact, nx, ny) / (double)n_c;
-	if (fd) {
-		fd_sums(h, contact, hbar, &sum, &dh_lap);
+	if (fd || nonperiodic) {
+		if (nonperiodic)
+			fd_sums_open(h, contact, hbar, &sum, &dh_lap);
+		else
+			fd_sums(h, contact, hbar, &sum, &dh_lap);
 		st->gbar_c = sqrt(sum / (double)n_c);
 		sum = -dh_lap / (double)n_c;
 		st->gbar_c_prime = signed_root(sum);
@@ -207,19 +290,22 @@ rc_contact_analyse(const rc_grid *h, const unsigned char *contact,
 		st->a_r = (double)st->n_c / (double)n;
 	}
 	if (flags & RC_CONTACT_LINE) {
-		st->n_cl = rc_contact_line(contact, nx, ny);
+		st->n_cl = o->nonperiodic ? rc_contact_line_open(contact, nx, ny) :
+		    rc_contact_line(contact, nx, ny);
 		st->a_yastrebov = ((double)st->n_c - o->alpha * (double)st->n_cl) /
 		    (double)n;
 	}
 	if (flags & RC_CONTACT_PATCHES) {
 		double sum_sq, cell = h->lx / (double)nx * (h->ly / (double)ny);
-		if (rc_contact_patches(contact, nx, ny, &st->n_patches, &sum_sq,
-		    err) != 0)
+		if ((o->nonperiodic ? rc_contact_patches_open(contact, nx, ny,
+		    &st->n_patches, &sum_sq, err) : rc_contact_patches(contact, nx,
+		    ny, &st->n_patches, &sum_sq, err)) != 0)
 			return -1;
 		st->patch_size_char = st->n_c ? sum_sq / (double)st->n_c * cell : NAN;
 	}
 	if (flags & RC_CONTACT_GRADIENT &&
-	    gradients(h, contact, st->n_c, o->fft, o->fd, st, err) != 0)
+	    gradients(h, contact, st->n_c, o->fft, o->fd, o->nonperiodic, st,
+	    err) != 0)
 		return -1;
 	if (flags & RC_CONTACT_KAPPA) {
 		if (o->modulus > 0 && o->gbar > 0)

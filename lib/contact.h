@@ -1,7 +1,8 @@
 /* contact.h - analysis of a contact field: contact fraction, contact
  * line, patches, and the indenter's gradients averaged over the contact.
  *
- * Input: the indenter heights h (a periodic grid) and a contact mask of
+ * Input: the indenter heights h (a periodic grid, or a finite patch: see
+ * opts.nonperiodic below) and a contact mask of
  * nx*ny bytes, 1 where the point is in contact.  Everything is O(N) and
  * only what the flags ask for is computed.  Neighbours are the four
  * nearest ones with periodic wrap-around; on a line grid (ny = 1, or
@@ -25,6 +26,15 @@
  * h_x = (h[i+1] - h[i-1]) / 2dx and the 5-point Laplacian, which need no
  * buffer and suit indenters with kinks (a kink makes the spectral
  * derivatives ring over the whole cell).  Averages over an empty contact are NaN.
+ *
+ * A finite patch (opts.nonperiodic, free boundaries in gfmd-solve) has no
+ * wrap-around: outside the grid there is no contact, so a contact point
+ * on the edge is on the contact line; patches are not joined across the
+ * edges; and the derivatives are central differences with the neighbours
+ * inside the grid only (h_x = (h[i+1] - h[i]) / dx at i = 0, the second
+ * difference of the nearest interior point at the edges; an axis of
+ * fewer than 3 points has no second derivative), whatever opts.fd says:
+ * spectral derivatives would see the step between opposite edges.
  */
 #ifndef RC_CONTACT_H
 #define RC_CONTACT_H
@@ -56,6 +66,7 @@ typedef struct rc_contact_opts {
 	 * make one for this call; its buffers are overwritten. */
 	rc_fft *fft;
 	int fd;			/* central differences instead of spectral */
+	int nonperiodic;	/* a finite patch: no wrap-around (above) */
 } rc_contact_opts;
 
 typedef struct rc_contact_stats {
@@ -76,12 +87,18 @@ int rc_contact_analyse(const rc_grid *h, const unsigned char *contact,
 /* rms of the central-difference gradient over the whole grid (the
  * finite-difference counterpart of rc_rms_gradient). */
 double rc_contact_gbar_fd(const rc_grid *h);
+/* The same without wrap-around (a finite patch; above). */
+double rc_contact_gbar_open(const rc_grid *h);
 
 /* The pieces, for callers that need only one. */
 size_t rc_contact_count(const unsigned char *contact, size_t n);
 size_t rc_contact_line(const unsigned char *contact, size_t nx, size_t ny);
 /* Patch count and sum of squared patch sizes in points (sum s_i^2). */
 int rc_contact_patches(const unsigned char *contact, size_t nx, size_t ny,
+    size_t *n_patches, double *sum_sq, rc_err *err);
+/* The same on a finite patch: no wrap-around. */
+size_t rc_contact_line_open(const unsigned char *contact, size_t nx, size_t ny);
+int rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
     size_t *n_patches, double *sum_sq, rc_err *err);
 
 #endif

@@ -16,7 +16,7 @@
  * metadata) identifies the problem. */
 static const char *const output_cols[] = {
 	"p_star", "p", "a_r", "n_c", "n_cl", "n_tot", "a_yastrebov", "gbar",
-	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap",
+	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap", "approach",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
 	"residual", "seconds", "plan_seconds", "nx", "ny", NULL
 };

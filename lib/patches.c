@@ -2,7 +2,8 @@
  * row runs): a union-find over the runs of contact in each row, runs
  * joined when they share a column with a run of the row before, the last
  * run of a row joined to its first across the x boundary, and the last
- * row joined to the first across the y boundary.  Memory is one
+ * row joined to the first across the y boundary (neither join for a
+ * finite patch, rc_contact_patches_open).  Memory is one
  * union-find entry per run, far below one per point except on
  * pathological masks.
  */
@@ -98,8 +99,8 @@ rc_runs_join(rc_uf *u, const rc_run *a, size_t na, const rc_run *b,
 	}
 }
 
-int
-rc_patches_slab(const unsigned char *contact, size_t nx, size_t ny,
+static int
+slab(const unsigned char *contact, size_t nx, size_t ny, int wrap_x,
     rc_uf *u, rc_run *first, size_t *nfirst, rc_run *last, size_t *nlast,
     rc_err *err)
 {
@@ -131,7 +132,8 @@ rc_patches_slab(const unsigned char *contact, size_t nx, size_t ny,
 			}
 			ncur++;
 		}
-		if (ncur >= 2 && cur[0].start == 0 && cur[ncur - 1].end == nx)
+		if (wrap_x && ncur >= 2 && cur[0].start == 0 &&
+		    cur[ncur - 1].end == nx)
 			rc_uf_union(u, cur[0].label, cur[ncur - 1].label);
 		if (j > 0)
 			rc_runs_join(u, prev, nprev, cur, ncur);
@@ -148,6 +150,36 @@ rc_patches_slab(const unsigned char *contact, size_t nx, size_t ny,
 	*nlast = nprev;
 	free(buf);
 	return 0;
+}
+
+int
+rc_patches_slab(const unsigned char *contact, size_t nx, size_t ny,
+    rc_uf *u, rc_run *first, size_t *nfirst, rc_run *last, size_t *nlast,
+    rc_err *err)
+{
+	return slab(contact, nx, ny, 1, u, first, nfirst, last, nlast, err);
+}
+
+/* Patches of a finite patch (free boundaries): no wrap-around. */
+int
+rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
+    size_t *n_patches, double *sum_sq, rc_err *err)
+{
+	rc_uf u = { NULL, NULL, 0, 0 };
+	rc_run *ends;
+	size_t maxruns = nx / 2 + 1, nfirst, nlast;
+	int rv = -1;
+
+	if ((ends = rc_calloc(2 * maxruns, sizeof(*ends), err)) == NULL)
+		return -1;
+	if (slab(contact, nx, ny, 0, &u, ends, &nfirst, ends + maxruns, &nlast,
+	    err) == 0) {
+		rc_uf_components(&u, n_patches, sum_sq);
+		rv = 0;
+	}
+	rc_uf_free(&u);
+	free(ends);
+	return rv;
 }
 
 int

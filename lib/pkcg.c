@@ -28,6 +28,16 @@
  * and |K x| <= k_max |x| (Parseval), k_max rms(u' - u) / p bounds it from
  * above at no cost; when the bound falls below the tolerance, or at the
  * end, the residual itself is computed (one FFT pair) and decides.
+ *
+ * Free boundaries (elastic_free.h): G is the padded Love compliance, whose
+ * applications cost one pair of the 2nx x 2ny transform, and G sigma is
+ * the whole displacement w (no mean removed), so c is the rigid level
+ * against the far field.  There is no stiffness operator K to evaluate
+ * the residual with, so the measure is the bound itself, with the largest
+ * stiffness of the same grid were it periodic, k_max = (pi/2) E*
+ * sqrt(dx^-2 + dy^-2), as the scale that turns a gap error into a
+ * pressure: residual = max(k_max rms(u' - u) / p, |<sigma> - p| / p).
+ * It is computed without a transform.
  */
 #include "solver_impl.h"
 
@@ -43,15 +53,38 @@ rc__cg_alloc(rc_solver *s, rc_err *err)
 {
 	s->u = fftw_alloc_real(s->n);
 	s->cg_dir = fftw_alloc_real(s->n);
-	if (s->u == NULL || s->cg_dir == NULL)
+	if (s->free_bc)
+		s->scratch = fftw_alloc_real(s->n);
+	if (s->u == NULL || s->cg_dir == NULL || (s->free_bc && s->scratch == NULL))
 		return rc_seterr(err, "out of memory (asked for %zu bytes of CG buffers)",
-		    2 * s->n * sizeof(double));
+		    3 * s->n * sizeof(double));
 	return 0;
 }
 
+/* out = G x: the periodic compliance (mean zero) or the free one. */
+static void
+compliance(rc_solver *s, const double *x, double *out)
+{
+	if (s->free_bc)
+		rc_halfspace_apply(&s->fel, x, out);
+	else
+		rc_elastic_displacement(&s->el, x, out);
+}
+
+/* The stiffness scale of the convergence bound (see the top). */
+double
+rc__stiffness_max(const rc_solver *s)
+{
+	double dx = s->lx / (double)s->nx, dy = s->ly / (double)s->ny;
+
+	if (!s->free_bc)
+		return s->el.k_max;
+	return 0.5 * M_PI * s->opts.modulus * sqrt(1 / (dx * dx) + 1 / (dy * dy));
+}
+
 /* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */
-static size_t
-level(const rc_solver *s, double *c)
+size_t
+rc__level(const rc_solver *s, double *c)
 {
 	size_t k, on = 0;
 	double sum = 0;
@@ -67,6 +100,35 @@ level(const rc_solver *s, double *c)
 	return on;
 }
 
+/* Free boundaries: the measure of the top of this file for (u', sigma);
+ * leaves u' in s->u, the contact set, the level c and the elastic energy
+ * (1/2) <sigma w>.  s->u holds w = G sigma on entry. */
+double
+rc__final_check_free(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
+	double *u = s->u;
+	const double *h = s->height, *sigma = s->sigma;
+
+	rc__level(s, &c);
+	s->level = c;
+#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
+	for (k = 0; k < n; k++) {
+		double v = u[k] + c, up = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
+
+		s->contact[k] = sigma[k] > 0;
+		sum_d2 += (up - v) * (up - v);
+		sum_s += sigma[k];
+		sum_e += sigma[k] * u[k];
+		u[k] = up;
+	}
+	s->energy = 0.5 * sum_e / (double)n;
+	force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
+	load = fabs(sum_s / (double)n - p) / p;
+	return force > load ? force : load;
+}
+
 /* Residual of (u', sigma); leaves u' in s->u, the contact set and the
  * elastic energy.  s->u holds G sigma on entry. */
 static double
@@ -77,7 +139,9 @@ final_check(rc_solver *s, double p)
 	double *u = s->u, *ku = s->el.fft.real;
 	const double *h = s->height, *sigma = s->sigma;
 
-	level(s, &c);
+	if (s->free_bc)
+		return rc__final_check_free(s, p);
+	rc__level(s, &c);
 #pragma omp parallel for schedule(static)
 	for (k = 0; k < n; k++) {
 		double v = u[k] + c;
@@ -124,7 +188,12 @@ initial_pressure(rc_solver *s, double p)
 	size_t k, n = s->n;
 	double sum = 0, *sigma = s->sigma;
 
-	if (!s->have_sigma && s->have_u) {
+	if (!s->have_sigma && s->have_u && s->free_bc) {
+		/* No K to find the pressure u needs: start uniform on the
+		 * points u touches. */
+		for (k = 0; k < n; k++)
+			sigma[k] = s->u[k] <= s->height[k] ? p : 0;
+	} else if (!s->have_sigma && s->have_u) {
 		double *ku = s->el.fft.real;
 
 		rc_elastic_force(&s->el, s->u, ku);
@@ -153,10 +222,11 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	rc_elastic *e = &s->el;
 	size_t n = s->n, k, n_contact = 0;
 	double *sigma = s->sigma, *disp = s->u, *t = s->cg_dir;
-	double *r = e->fft.real;
+	double *r = s->free_bc ? s->scratch : e->fft.real;
+	double k_max = rc__stiffness_max(s);
 	const double *h = s->height;
 	double g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
-	double compliance = 0;	/* G_00, computed when first needed */
+	double g00 = 0;		/* G_00, computed when first needed */
 	double pn = p * (double)n, inv_n = 1.0 / (double)n;
 	long it, since_refresh = 0;
 	int stale = 1, conjugate = 0, status = 1;
@@ -170,12 +240,12 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		size_t reentered = 0, clipped = 0, n_active = 0;
 
 		if (stale || since_refresh >= REFRESH_EVERY) {
-			rc_elastic_displacement(e, sigma, disp);
+			compliance(s, sigma, disp);
 			stale = 0;
 			since_refresh = 0;
 		}
 		since_refresh++;
-		n_contact = level(s, &c);
+		n_contact = rc__level(s, &c);
 		if (n_contact == 0) {
 			/* Cannot happen with sum sigma = p N > 0; guard anyway. */
 			break;
@@ -189,7 +259,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			else if (g < 0)
 				pen += g * g;
 		}
-		bound = e->k_max * sqrt((gsum + pen) * inv_n) / p;
+		bound = k_max * sqrt((gsum + pen) * inv_n) / p;
 		if (bound <= s->opts.tol || it >= s->opts.max_iter ||
 		    (s->opts.stop && *s->opts.stop)) {
 			residual = final_check(s, p);
@@ -227,7 +297,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			} else
 				t[k] = 0;
 		}
-		rc_elastic_displacement(e, t, r);
+		compliance(s, t, r);
 #pragma omp parallel for reduction(+:sum_rt, sum_r) schedule(static)
 		for (k = 0; k < n; k++)
 			if (sigma[k] > 0 || disp[k] + c - h[k] < 0) {
@@ -248,9 +318,9 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		if (tau > 0)
 			tau_in = tau;
 		else {
-			if (!(compliance > 0))
-				compliance = self_compliance(e);
-			tau_in = 1 / compliance;
+			if (!(g00 > 0))
+				g00 = s->free_bc ? s->fel.self : self_compliance(e);
+			tau_in = 1 / g00;
 		}
 #pragma omp parallel for reduction(+:sum_s, reentered, clipped) schedule(static)
 		for (k = 0; k < n; k++) {

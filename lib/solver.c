@@ -26,6 +26,11 @@
  * (FIRE iterations cost two FFT pairs, CG's one or two: fire.c, pkcg.c.)
  * The default 1e-6 leaves a margin of two decades over the first
  * tolerance at which every contact point is right.
+ *
+ * Free boundaries (opts.boundary): the padded compliance of
+ * elastic_free.h replaces K and G; without K the measure is the gap
+ * bound of pkcg.c for both methods (FIRE then runs on the pressures,
+ * fire_free.c).
  */
 #include "solver_impl.h"
 
@@ -62,6 +67,22 @@ rc_method_name(enum rc_method m)
 	return "unknown";
 }
 
+const char *
+rc_boundary_name(enum rc_boundary b)
+{
+	return b == RC_BOUNDARY_FREE ? "free" : "periodic";
+}
+
+int
+rc_boundary_parse(const char *name)
+{
+	if (strcmp(name, "periodic") == 0)
+		return RC_BOUNDARY_PERIODIC;
+	if (strcmp(name, "free") == 0)
+		return RC_BOUNDARY_FREE;
+	return -1;
+}
+
 int
 rc_method_parse(const char *name)
 {
@@ -86,6 +107,16 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "tolerance must be positive and finite");
 		return NULL;
 	}
+	if (o->boundary != RC_BOUNDARY_PERIODIC && o->boundary != RC_BOUNDARY_FREE) {
+		rc_seterr(err, "unknown boundary kind %d", (int)o->boundary);
+		return NULL;
+	}
+#ifdef RC_MPI
+	if (o->boundary == RC_BOUNDARY_FREE) {
+		rc_seterr(err, "free boundaries are not in the MPI build");
+		return NULL;
+	}
+#endif
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -104,8 +135,15 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->n = n = ind->nx * ind->ny;
 	s->lx = ind->lx;
 	s->ly = ind->ly;
-	if (rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    (enum rc_fft_effort)o->measure, err) != 0) {
+	s->free_bc = o->boundary == RC_BOUNDARY_FREE;
+	/* Free boundaries: the padded compliance; FIRE on them also uses
+	 * the periodic stiffness as its inverse mass (fire_free.c). */
+	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
+	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) != 0) ||
+	    ((!s->free_bc || o->method == RC_METHOD_FIRE) &&
+	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
+	    (enum rc_fft_effort)o->measure, err) != 0)) {
+		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;
 	}
@@ -120,8 +158,19 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	}
 	memcpy(s->height, ind->z, n * sizeof(double));
 	memset(s->sigma, 0, n * sizeof(double));
+	s->top = -HUGE_VAL;
+	for (size_t k = 0; k < n; k++)
+		if (s->height[k] > s->top)
+			s->top = s->height[k];
+#ifdef RC_MPI
+	rc_mpi_max(&s->top, 1);
+#endif
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
-	    rc__cg_alloc(s, err)) != 0) {
+	    rc__cg_alloc(s, err)) != 0 || (s->free_bc && s->scratch == NULL &&
+	    (s->scratch = fftw_alloc_real(n)) == NULL)) {
+		if (s->free_bc && s->scratch == NULL)
+			rc_seterr(err, "out of memory (asked for %zu bytes)",
+			    n * sizeof(double));
 		rc_solver_free(s);
 		return NULL;
 	}
@@ -136,6 +185,8 @@ rc_solver_free(rc_solver *s)
 	if (s->u != s->el.fft.real)
 		fftw_free(s->u);
 	rc_elastic_free(&s->el);
+	rc_halfspace_release(&s->fel);
+	fftw_free(s->scratch);
 	fftw_free(s->height);
 	fftw_free(s->sigma);
 	free(s->contact);
@@ -163,12 +214,15 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	double t0 = rc_clock();
 	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
+	unsigned long padded = s->fel.n_pairs;
 	int r;
 
 	memset(res, 0, sizeof(*res));
 	if (!(p > 0) || !isfinite(p))
 		return rc_seterr(err, "pressure must be positive and finite");
-	if (s->opts.method == RC_METHOD_FIRE)
+	if (s->opts.method == RC_METHOD_FIRE && s->free_bc)
+		r = rc__fire_free_solve(s, p, res, err);
+	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
 	else
 		r = rc__cg_solve(s, p, res, err);
@@ -176,7 +230,12 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		return -1;
 	s->last_pressure = p;
 	res->seconds = rc_clock() - t0;
-	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
+	/* Free: pairs of the padded 2nx x 2ny transform (FIRE adds its
+	 * unpadded ones, fire_free.c). */
+	if (s->free_bc)
+		res->fft_pairs += (double)(s->fel.n_pairs - padded);
+	else
+		res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
 	return r;
 }
@@ -240,16 +299,38 @@ rc_solver_mean_gap(const rc_solver *s)
 #endif
 }
 
+double
+rc_solver_approach(const rc_solver *s)
+{
+	size_t k;
+	double sum = 0;
+
+	if (s->free_bc)
+		return s->top - s->level;
+#pragma omp parallel for reduction(+:sum) schedule(static)
+	for (k = 0; k < s->n; k++)
+		sum += s->u[k];
+#ifdef RC_MPI
+	rc_mpi_sum(&sum, 1);
+	return s->top - sum / (double)s->el.n;
+#else
+	return s->top - sum / (double)s->n;
+#endif
+}
+
 size_t
 rc_solver_bytes(const rc_solver *s)
 {
-	size_t b = sizeof(*s) + rc_elastic_bytes(&s->el);
+	size_t b = sizeof(*s) + rc_halfspace_bytes(&s->fel) +
+	    rc_elastic_bytes(&s->el);
 	b += s->n * (2 * sizeof(double) + 1);	/* height, sigma, contact */
 	if (s->u != s->el.fft.real)
 		b += s->n * sizeof(double);
 	if (s->fire_vel)
 		b += s->n * sizeof(double);
 	if (s->cg_dir)
+		b += s->n * sizeof(double);
+	if (s->scratch)
 		b += s->n * sizeof(double);
 	return b;
 }

@@ -1,5 +1,8 @@
 /* solver.h - frictionless, non-adhesive contact of a linearly elastic
- * periodic half space (above) on a rigid indenter of heights h (below).
+ * half space (above) on a rigid indenter of heights h (below), either
+ * periodic (the grid is one cell of an infinite periodic surface) or with
+ * free boundaries (the grid is an isolated patch of an infinite half
+ * space, traction-free outside it: elastic_free.h).
  *
  * The elastic surface height u(r) obeys u >= h; gap g = u - h; the contact
  * pressure sigma(r) >= 0 acts only where g = 0, and its mean equals the
@@ -21,8 +24,16 @@ enum rc_method {
 	RC_METHOD_CG
 };
 
+enum rc_boundary {
+	RC_BOUNDARY_PERIODIC = 0,
+	RC_BOUNDARY_FREE
+};
+
 typedef struct rc_solver_opts {
 	enum rc_method method;
+	/* Free boundaries: grids of at least 2 x 2; FIRE runs on pressures
+	 * there (fire_free.c). */
+	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
@@ -49,6 +60,8 @@ typedef struct rc_solver rc_solver;
 void rc_solver_defaults(rc_solver_opts *o);
 const char *rc_method_name(enum rc_method m);
 int rc_method_parse(const char *name);		/* -1 if unknown */
+const char *rc_boundary_name(enum rc_boundary b);
+int rc_boundary_parse(const char *name);	/* -1 if unknown */
 
 /* The indenter is copied; it may be freed afterwards. */
 rc_solver *rc_solver_new(const rc_grid *indenter, const rc_solver_opts *o,
@@ -58,11 +71,34 @@ void rc_solver_free(rc_solver *s);
 /* Warm start from an elastic surface height field u (nx*ny values). */
 int rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err);
 
-/* Solve at mean (absolute) pressure p > 0.  Returns 0 if converged, 1 if
+/* Solve at mean (absolute) pressure p > 0 (free: over the given area, so
+ * the load is p lx ly).  Returns 0 if converged, 1 if
  * it stopped at max_iter or on *stop (the state is still the best reached
  * and the accessors below are valid), -1 on an error. */
 int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
     rc_err *err);
+
+/* Displacement control: solve for the mean pressure p at which the
+ * approach (rc_solver_approach) equals delta > 0, by a bracketed 1-D root
+ * find on log p (GSL's Brent), each trial a warm-started load-controlled
+ * solve (solver_approach.c); |approach - delta| <= opts.tol * delta at
+ * the end.  *pressure gets p; res sums the iterations, transform pairs
+ * and time of all trials.  Periodic: delta must be below max h - <h>
+ * (full contact).  Returns as rc_solver_solve. */
+int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
+    rc_solve_result *res, rc_err *err);
+
+/* The approach of the current solution: how far the rigid reference of
+ * the elastic body has moved towards the indenter since it first touched
+ * it (at zero load, the flat body at the height of the highest point of h):
+ *   free:     delta = max h - c, c the rigid level (the surface height far
+ *             from the area, elastic_free.h);
+ *   periodic: delta = max h - <u>, the mean surface height being the only
+ *             reference of a periodic body (so delta = mean-gap change:
+ *             (max h - <h>) - <u - h>).
+ * For a Hertz indenter h = -r^2/(2R) (free) this is the a^2/R of
+ * Hertz. */
+double rc_solver_approach(const rc_solver *s);
 
 /* The current solution, valid until the next solve or free. */
 const double *rc_solver_displacement(const rc_solver *s);	/* u(r) */
@@ -70,7 +106,9 @@ const double *rc_solver_pressure(const rc_solver *s);		/* sigma(r) >= 0 */
 /* The contact set: 1 where the point is in contact, as decided by the
  * method (documented in gfmd-solve(1)); both methods agree at convergence. */
 const unsigned char *rc_solver_contact(const rc_solver *s);
-/* Elastic energy per unit area, (1/2) sum_q (q E* / 2) |u_q|^2 / N^2. */
+/* Elastic energy per unit area, (1/2) sum_q (q E* / 2) |u_q|^2 / N^2
+ * (periodic); free: (1/2) <sigma w> over the given area, the work of the
+ * pressure per unit area of it. */
 double rc_solver_elastic_energy(const rc_solver *s);
 /* Mean gap <u - h>. */
 double rc_solver_mean_gap(const rc_solver *s);

@@ -5,13 +5,19 @@
 #define RC_SOLVER_IMPL_H
 
 #include "elastic.h"
+#include "elastic_free.h"
 #include "solver.h"
 
 struct rc_solver {
 	rc_solver_opts opts;
 	size_t nx, ny, n;
 	double lx, ly;
-	rc_elastic el;
+	rc_elastic el;		/* periodic operator (unused when free) */
+	rc_halfspace fel;	/* free boundaries: the padded compliance */
+	int free_bc;		/* opts.boundary == RC_BOUNDARY_FREE */
+	double level;		/* free CG: rigid level c of the solution */
+	double top;		/* max h */
+	double *scratch;	/* free CG: n doubles for G t */
 	double *height;		/* indenter h, n */
 	double *u;		/* elastic surface height; FIRE: el.fft.real */
 	double *sigma;		/* contact pressure, n */
@@ -32,6 +38,16 @@ double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigm
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
+/* Free boundaries (pkcg.c): the rigid level c = <h - G sigma> over
+ * {sigma > 0} (returns its size); the convergence measure and the
+ * admissible u' from s->u = G sigma (leaves u', the contact set, level
+ * and energy); the stiffness scale of that measure.  FIRE on pressures
+ * (fire_free.c). */
+size_t rc__level(const rc_solver *s, double *c);
+double rc__final_check_free(rc_solver *s, double p);
+double rc__stiffness_max(const rc_solver *s);
+int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
+    rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
 
 #endif

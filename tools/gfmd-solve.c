@@ -133,8 +133,8 @@ static void
 usage(void)
 {
 	printf(
-"usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...]) [-E MODULUS]\n"
-"           [--method fire|cg] [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
+"usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...] | --approach D[,D...])\n"
+"           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
 "           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
@@ -145,6 +145,10 @@ usage(void)
 "  -p P[,P...]          reduced pressures p* = p/(E* gbar), gbar the rms\n"
 "                       gradient of the whole indenter\n"
 "  --pressure-abs P[,P...]  absolute mean pressures p (units of E*)\n"
+"  --approach D[,D...]  displacement control: approaches D (length units)\n"
+"  --boundary periodic|free  one period of an infinite surface, or an\n"
+"                       isolated patch of half space (default: the grid's\n"
+"                       periodic flag)\n"
 "  -E MODULUS           contact modulus E* (default 1)\n"
 "  --method fire|cg     FIRE-GFMD (default) or Polonsky-Keer CG\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
@@ -238,7 +242,8 @@ main(int argc, char **argv)
 	gfmd_opts_check(&t, &o, argc, argv);
 	tool_usage_check(&t);
 	input = optind < argc ? argv[optind] : NULL;
-	npressures = o.nreduced ? o.nreduced : o.nabsolute;
+	npressures = o.napproach ? o.napproach : o.nreduced ? o.nreduced :
+	    o.nabsolute;
 
 	tool_fft_setup(&t);
 	h = tool_read_grid(&t, input);
@@ -295,9 +300,16 @@ main(int argc, char **argv)
 			    "%zux%zu", o.resume_path, saved_u->nx, saved_u->ny, h->nx,
 			    h->ny);
 	}
-	/* The analysis plan lives as long as the solver; --fd needs none. */
+	/* Free boundaries (issue 16): the grid's periodic flag decides unless
+	 * --boundary is given. */
+	o.so.boundary = o.boundary >= 0 ? (enum rc_boundary)o.boundary :
+	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
+	/* The analysis plan lives as long as the solver; --fd and free
+	 * boundaries need none. */
 	memset(&fft, 0, sizeof(fft));
-	if (o.fd)
+	if (o.so.boundary == RC_BOUNDARY_FREE)
+		gbar = rc_contact_gbar_open(h);
+	else if (o.fd)
 		gbar = rc_contact_gbar_fd(h);
 	else if (rc_fft_init(&fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &fft, &gbar, &err) != 0)
@@ -355,8 +367,9 @@ main(int argc, char **argv)
 	co.alpha = o.alpha;
 	co.modulus = o.modulus;
 	co.gbar = gbar;
-	co.fft = o.fd ? NULL : &fft;
+	co.fft = o.fd || o.so.boundary == RC_BOUNDARY_FREE ? NULL : &fft;
 	co.fd = o.fd;
+	co.nonperiodic = o.so.boundary == RC_BOUNDARY_FREE;
 	/* A resumed run first repeats the rows its checkpoint finished. */
 	for (size_t k = 0; k < first; k++) {
 		if (rc_checkpoint_row(&saved, k, &row, &err) != 0 ||
@@ -387,7 +400,8 @@ main(int argc, char **argv)
 	for (size_t k = first; k < npressures; k++) {
 		rc_solve_result res;
 		rc_contact_stats st;
-		double p = o.nreduced ? o.reduced[k] * o.modulus * gbar : o.absolute[k];
+		double p = o.napproach ? NAN : o.nreduced ?
+		    o.reduced[k] * o.modulus * gbar : o.absolute[k];
 		/* Echo a requested p* exactly: p/(E* gbar) rounds. */
 		double p_star = o.nreduced ? o.reduced[k] :
 		    gbar > 0 ? p / (o.modulus * gbar) : NAN;
@@ -400,13 +414,20 @@ main(int argc, char **argv)
 		/* A periodic checkpoint stops the solve through o.so.stop; it is
 		 * saved and the same pressure goes on from where it stopped. */
 		for (;;) {
-			r = rc_solver_solve(solver, p, &res, &err);
+			if (o.napproach) {
+				r = rc_solver_solve_approach(solver, o.approach[k], &p,
+				    &res, &err);
+				p_star = gbar > 0 ? p / (o.modulus * gbar) : NAN;
+			} else
+				r = rc_solver_solve(solver, p, &res, &err);
 			if (pr.shown) {
 				fputc('\n', stderr);
 				pr.shown = 0;
 			}
 			if (r < 0) {
 				rc_atomic_abort(&out);
+				if (o.napproach)
+					tool_fail(&t, "approach %g: %s", o.approach[k], err.msg);
 				tool_fail(&t, "p = %g: %s", p, err.msg);
 			}
 			iterations += res.iterations;
@@ -469,7 +490,9 @@ main(int argc, char **argv)
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .seconds = res.seconds, .plan_seconds = plan_seconds,
-			    .method = rc_method_name(o.so.method), .indenter = h,
+			    .method = rc_method_name(o.so.method),
+			    .boundary = rc_boundary_name(o.so.boundary),
+			    .approach = rc_solver_approach(solver), .indenter = h,
 			    .nx = h->nx, .ny = h->ny };
 
 			if (gfmd_result_row(&row, &in) != 0) {

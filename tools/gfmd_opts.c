@@ -17,6 +17,7 @@ gfmd_opts_init(struct gfmd_opts *o)
 	rc_solver_defaults(&o->so);
 	o->modulus = 1;
 	o->alpha = RC_YASTREBOV_ALPHA;
+	o->boundary = -1;
 }
 
 void
@@ -24,14 +25,17 @@ gfmd_opts_free(struct gfmd_opts *o)
 {
 	free(o->reduced);
 	free(o->absolute);
-	o->reduced = o->absolute = NULL;
+	free(o->approach);
+	o->reduced = o->absolute = o->approach = NULL;
 }
 
-/* A list of pressures, each positive. */
+/* A list of pressures (or approaches), each positive. */
 static void
 pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
     size_t *n)
 {
+	const char *what = strcmp(opt, "--approach") == 0 ? "approach" : "pressure";
+
 	free(*v);
 	*v = NULL;
 	*n = 0;
@@ -39,7 +43,7 @@ pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
 		return;
 	for (size_t i = 0; i < *n; i++)
 		if (!((*v)[i] > 0)) {
-			tool_bad(t, "%s: pressure %g must be positive", opt, (*v)[i]);
+			tool_bad(t, "%s: %s %g must be positive", opt, what, (*v)[i]);
 			return;
 		}
 }
@@ -57,6 +61,13 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		break;
 	case OPT_PRESSURE_ABS:
 		pressure_list(t, "--pressure-abs", arg, &o->absolute, &o->nabsolute);
+		break;
+	case OPT_APPROACH:
+		pressure_list(t, "--approach", arg, &o->approach, &o->napproach);
+		break;
+	case OPT_BOUNDARY:
+		if ((o->boundary = rc_boundary_parse(arg)) < 0)
+			tool_bad(t, "--boundary %s: want periodic or free", arg);
 		break;
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
@@ -136,11 +147,15 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 void
 gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 {
-	if (o->nreduced && o->nabsolute)
-		tool_bad(t, "-p and --pressure-abs: give one of them, not both");
-	else if (!o->nreduced && !o->nabsolute && t->nbad == 0 &&
+	if ((o->nreduced != 0) + (o->nabsolute != 0) + (o->napproach != 0) > 1)
+		tool_bad(t, "-p, --pressure-abs and --approach: give one of them");
+	else if (!o->nreduced && !o->nabsolute && !o->napproach && t->nbad == 0 &&
 	    o->resume_path == NULL)
-		tool_bad(t, "no pressure: give -p P[,P...] or --pressure-abs P[,P...]");
+		tool_bad(t, "no load: give -p P[,P...], --pressure-abs P[,P...] or "
+		    "--approach D[,D...]");
+	if (o->napproach && (o->ck_path != NULL || o->resume_path != NULL))
+		tool_bad(t, "--approach: --checkpoint and --resume are for load "
+		    "control (-p, --pressure-abs) only");
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");
 	if (o->ck_path != NULL && rc_is_stdio(o->ck_path))

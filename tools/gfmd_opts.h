@@ -23,7 +23,9 @@ enum {
 	OPT_FD,
 	OPT_CHECKPOINT,
 	OPT_CHECKPOINT_EVERY,
-	OPT_RESUME
+	OPT_RESUME,
+	OPT_BOUNDARY,
+	OPT_APPROACH
 };
 
 #define GFMD_OPTSTRING "p:E:o:j:qL:h"
@@ -42,6 +44,8 @@ enum {
 	{ "checkpoint", required_argument, NULL, OPT_CHECKPOINT }, \
 	{ "checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY }, \
 	{ "resume", required_argument, NULL, OPT_RESUME }, \
+	{ "boundary", required_argument, NULL, OPT_BOUNDARY }, \
+	{ "approach", required_argument, NULL, OPT_APPROACH }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -56,6 +60,9 @@ struct gfmd_opts {
 	rc_solver_opts so;
 	double *reduced, *absolute;	/* -p and --pressure-abs lists */
 	size_t nreduced, nabsolute;
+	double *approach;		/* --approach list (displacement control) */
+	size_t napproach;
+	int boundary;			/* an enum rc_boundary, -1: the grid's */
 	double modulus, alpha, ck_every;
 	int fd;
 	const char *init, *ck_path, *resume_path;

@@ -9,6 +9,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	rc_row_clear(row);
 	if (rc_row_num(row, "p_star", in->p_star) ||
 	    rc_row_num(row, "p", in->p) ||
+	    rc_row_num(row, "approach", in->approach) ||
 	    rc_row_num(row, "a_r", st->a_r) ||
 	    rc_row_int(row, "n_c", (long long)st->n_c) ||
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
@@ -28,6 +29,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "seconds", in->seconds) ||
 	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
 	    rc_row_str(row, "method", in->method) ||
+	    rc_row_str(row, "boundary", in->boundary) ||
 	    rc_row_int(row, "nx", (long long)in->nx) ||
 	    rc_row_int(row, "ny", (long long)in->ny) ||
 	    rc_row_num(row, "lx", in->indenter->lx) ||

@@ -15,6 +15,8 @@ struct gfmd_row {
 	long iterations;
 	double residual, seconds, plan_seconds;
 	const char *method;
+	const char *boundary;		/* "periodic" or "free" */
+	double approach;		/* rc_solver_approach */
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */
 };

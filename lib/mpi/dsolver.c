@@ -71,6 +71,12 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 	}
 	memcpy(s->height, height, n * sizeof(double));
 	memset(s->sigma, 0, (n + 1) * sizeof(double));
+	/* max h, the reference of rc_solver_approach */
+	s->top = -HUGE_VAL;
+	for (size_t i = 0; i < n; i++)
+		if (height[i] > s->top)
+			s->top = height[i];
+	rc_mpi_max(&s->top, 1);
 	s->u = fftw_alloc_real(n + 1);
 	s->fire_vel = fftw_alloc_real(n + 1);
 	if (s->u == NULL || s->fire_vel == NULL) {

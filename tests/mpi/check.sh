@@ -167,12 +167,16 @@ done
 
 # What the MPI build does not have is refused with a message, exit 2; a
 # missing input fails on every rank alike, exit 1, without hanging.
-for bad in "--method cg" "--fd" "--png x.png" "--checkpoint c.surf" "--gap g.npy"; do
+for bad in "--method cg" "--fd" "--png x.png" "--checkpoint c.surf" "--gap g.npy" "--boundary free"; do
 	check_status "gfmd-solve MPI refuses $bad" 2 $MPIRUN -np 2 \
 	    "$MPI_BIN/gfmd-solve" -p 0.1 $bad t.surf
 done
 $MPIRUN -np 2 "$MPI_BIN/gfmd-solve" -p 0.1 --method cg t.surf 2>err.txt
 check "gfmd-solve MPI --method cg message" grep -q "FIRE only" err.txt
+check_status "gfmd-solve MPI refuses --approach" 2 $MPIRUN -np 2 \
+    "$MPI_BIN/gfmd-solve" --approach 0.01 t.surf
+$MPIRUN -np 2 "$MPI_BIN/gfmd-solve" --approach 0.01 t.surf 2>err.txt
+check "gfmd-solve MPI --approach message" grep -q "not in the MPI build" err.txt
 check_status "gfmd-solve MPI non-.surf input" 2 $MPIRUN -np 2 \
     "$MPI_BIN/gfmd-solve" -p 0.1 t.npy
 check_status "gfmd-solve MPI missing input" 1 $MPIRUN -np 2 \

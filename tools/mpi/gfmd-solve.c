@@ -110,6 +110,10 @@ main(int argc, char **argv)
 		tool_bad(&t, "--method %s: the MPI build has FIRE only (--method "
 		    "fire; use the serial gfmd-solve for cg)",
 		    rc_method_name(o.so.method));
+	if (o.boundary == RC_BOUNDARY_FREE || o.napproach)
+		tool_bad(&t, "--boundary free, --approach: not in the MPI build "
+		    "(periodic boundaries under load control only; use the serial "
+		    "gfmd-solve)");
 	if (o.fd || o.ck_path != NULL || o.ck_every > 0 || o.resume_path != NULL ||
 	    t.png != NULL || t.have_l)
 		tool_bad(&t, "--fd, --checkpoint, --checkpoint-every, --resume, "
@@ -130,6 +134,11 @@ main(int argc, char **argv)
 
 	if ((h = rc_mpi_surf_read(argv[optind], &ny, &height, &err)) == NULL)
 		tool_fail(&t, "%s: %s", argv[optind], err.msg);
+	if (!h->periodic && o.boundary != RC_BOUNDARY_PERIODIC)
+		tool_fail(&t, "%s: a finite patch (not periodic) needs free "
+		    "boundaries, which the MPI build does not have (use the serial "
+		    "gfmd-solve, or --boundary periodic to treat it as one period)",
+		    argv[optind]);
 	o.so.modulus = o.modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
@@ -199,7 +208,9 @@ main(int argc, char **argv)
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .seconds = seconds, .plan_seconds = plan_seconds,
-			    .method = "fire", .indenter = h, .nx = h->nx, .ny = ny };
+			    .method = "fire", .boundary = "periodic",
+			    .approach = rc_solver_approach(solver),
+			    .indenter = h, .nx = h->nx, .ny = ny };
 
 			if (gfmd_result_row(&row, &in) != 0)
 				tool_fail(&t, "out of memory");

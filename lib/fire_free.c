@@ -1,0 +1,183 @@
+/* fire_free.c - FIRE on free boundaries: damped dynamics of the contact
+ * pressures sigma >= 0 (not of the surface heights, as fire.c does on a
+ * periodic body), with the padded compliance G (elastic_free.h) as the
+ * operator and the periodic stiffness of the same grid as the inverse
+ * mass, so that every mode has nearly the same frequency.
+ *
+ * The pressures minimise the complementary energy
+ *   Pi(sigma) = (1/2) sigma.G sigma - sigma.(h - c),  sigma >= 0,
+ *   sum sigma = p N (the load; c its multiplier, the rigid level),
+ * whose force on sigma is minus the gap, f = -(G sigma + c - h).  G is
+ * dense and not diagonal in Fourier space, but at wavelengths below the
+ * size of the area it is the half-space compliance 2/(q E*), whose
+ * inverse is the periodic stiffness k_q = E* q / 2 (elastic.h).  So the
+ * acceleration a = K f, K the periodic operator on the nx x ny grid: a
+ * frequency near 1 for every mode, as in Zhou, Moseler & Mueser's mass
+ * weighting, and the iteration count does not grow like sqrt(N) (the
+ * periodic K is wrong only for the few longest waves, where G feels the
+ * edges of the area).  One iteration:
+ *  1. u = G sigma (one pair of the padded 2nx x 2ny transform); c the
+ *     level that makes the mean gap over {sigma > 0} zero (as in pkcg.c).
+ *  2. f = -(u + c - h) on the active set: sigma > 0, or sigma = 0 with a
+ *     negative gap (penetration: the force raises the pressure); f = 0
+ *     elsewhere (sigma = 0 and an open gap: the bound sigma >= 0 takes the
+ *     force, as the wall does in fire.c).  Convergence: the free-boundary
+ *     measure of pkcg.c, k_max rms(f) / p, from this pass (the load is
+ *     exact after step 5).
+ *  3. a = K f (one pair of the nx x ny transform; the mean mode gets
+ *     0: the mean of sigma is the load, held by step 5), then a = 0 off
+ *     the active set.
+ *  4. FIRE 2.0 as in fire.c, with fire.c's parameters (same meaning: time
+ *     in units of the common period), P = f.v.
+ *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
+ *     rescaled to the load (PK's rescaling; it moves the state along the
+ *     load constraint only).
+ * Measured (gfmd-solve --boundary free -p 0.05, surfgen defaults, seed 1,
+ * tol 1e-6): FIRE 43, 59, 72 iterations at 128^2, 256^2, 512^2; the CG
+ * 48, 97, 187 on the same maps (same a_r to the last point).
+ * Cost per iteration: one padded pair and one unpadded pair (about 1.25
+ * padded pairs); fft_pairs counts the padded pairs plus a quarter of the
+ * unpadded ones.  Memory: sigma, u, v and the periodic operator besides
+ * the padded one.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+#include <string.h>
+
+#define DT_START	1.0
+#define DT_MAX		2.0
+#define N_MIN		1
+#define F_INC		1.1
+#define F_DEC		0.85
+#define ALPHA_START	0.5
+#define F_ALPHA		0.99
+#define PROGRESS_EVERY	50
+
+/* a = K f (mean mode 0) into the periodic operator's real buffer. */
+static double *
+stiffness_times(rc_solver *s, const double *f)
+{
+	rc_elastic *e = &s->el;
+
+	rc_elastic_force(e, f, e->fft.real);
+	return e->fft.real;
+}
+
+static void
+initial_pressure(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double sum = 0, *sigma = s->sigma;
+
+	if (!s->have_sigma && s->have_u)
+		for (k = 0; k < n; k++)
+			sigma[k] = s->u[k] <= s->height[k] ? p : 0;
+	if (s->have_sigma || s->have_u)
+		for (k = 0; k < n; k++)
+			sum += sigma[k];
+	if (!(sum > 0)) {
+		for (k = 0; k < n; k++)
+			sigma[k] = p;
+		sum = p * (double)n;
+	}
+	for (k = 0; k < n; k++)
+		sigma[k] *= p * (double)n / sum;
+	s->have_sigma = 1;
+}
+
+int
+rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
+{
+	size_t n = s->n, k;
+	double dt = DT_START, alpha = ALPHA_START, residual = HUGE_VAL;
+	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
+	double k_max = rc__stiffness_max(s), pn = p * (double)n;
+	const double *h = s->height;
+	unsigned long small0 = s->el.n_r2c + s->el.n_c2r;
+	long it, npos = 0;
+	int status = 1;
+
+	(void)err;
+	initial_pressure(s, p);
+	memset(v, 0, n * sizeof(double));
+	for (it = 0; ; it++) {
+		double c, ff = 0, power = 0, aa = 0, av = 0, vv = 0, sum = 0;
+		double mix_v = 1, mix_a = 0, *a;
+		size_t on;
+		int restart;
+
+		rc_halfspace_apply(&s->fel, sigma, u);
+		on = rc__level(s, &c);
+#pragma omp parallel for reduction(+:ff, power) schedule(static)
+		for (k = 0; k < n; k++) {
+			double g = u[k] + c - h[k];
+
+			f[k] = sigma[k] > 0 || g < 0 ? -g : 0;
+			ff += f[k] * f[k];
+			power += f[k] * v[k];
+		}
+		residual = k_max * sqrt(ff / (double)n) / p;
+		if (residual <= s->opts.tol || it >= s->opts.max_iter ||
+		    (s->opts.stop && *s->opts.stop)) {
+			residual = rc__final_check_free(s, p);
+			if (residual <= s->opts.tol)
+				status = 0;
+			break;
+		}
+		if (s->opts.progress && it % PROGRESS_EVERY == 0)
+			s->opts.progress(s->opts.progress_ctx, it, residual,
+			    (double)on / (double)n);
+		a = stiffness_times(s, f);
+		restart = !(power > 0);
+		if (!restart) {
+			if (++npos > N_MIN) {
+				dt = fmin(dt * F_INC, DT_MAX);
+				alpha *= F_ALPHA;
+			}
+		} else {
+			npos = 0;
+			dt *= F_DEC;
+			alpha = ALPHA_START;
+		}
+#pragma omp parallel for reduction(+:aa, av, vv) schedule(static)
+		for (k = 0; k < n; k++) {
+			if (f[k] == 0)
+				a[k] = 0;
+			if (restart)
+				v[k] = 0;
+			aa += a[k] * a[k];
+			av += a[k] * v[k];
+			vv += v[k] * v[k];
+		}
+		if (aa > 0) {
+			double vn2 = vv + 2 * dt * av + dt * dt * aa;
+
+			mix_v = 1 - alpha;
+			mix_a = alpha * sqrt(vn2 / aa);
+		}
+#pragma omp parallel for reduction(+:sum) schedule(static)
+		for (k = 0; k < n; k++) {
+			double vk = mix_v * (v[k] + dt * a[k]) + mix_a * a[k];
+			double sk = sigma[k] + dt * vk;
+
+			if (sk <= 0) {
+				sk = 0;
+				vk = 0;
+			}
+			sigma[k] = sk;
+			v[k] = vk;
+			sum += sk;
+		}
+		if (sum > 0)
+#pragma omp parallel for schedule(static)
+			for (k = 0; k < n; k++)
+				sigma[k] *= pn / sum;
+	}
+	/* fft_pairs in padded pairs (solver.c counts those): the unpadded
+	 * pairs as a quarter each. */
+	res->fft_pairs = 0.25 * 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - small0);
+	res->iterations = it;
+	res->residual = residual;
+	return status;
+}

@@ -1,0 +1,134 @@
+/* solver_approach.c - displacement control: the mean pressure at which the
+ * approach (rc_solver_approach, solver.h) takes a prescribed value.
+ *
+ * The approach grows monotonically with the load, so p is found by a 1-D
+ * root find on f(x) = approach(e^x) - delta, x = log p: the root is first
+ * bracketed (p multiplied or divided by 4 from a start), then narrowed by
+ * regula falsi with the Illinois modification (the retained end's value
+ * halved when the same end is kept twice), which converges superlinearly
+ * and, unlike GSL's Brent, never re-evaluates an end: each evaluation is a
+ * full contact solve, warm-started from the one before, so the state left
+ * in the solver is always that of the last (accepted) pressure.  Stop when
+ * |approach - delta| <= tol delta, tol the solver's tolerance.
+ *
+ * Serial only (the MPI build refuses --approach).
+ *
+ * Start: the last solved pressure, or p = E* delta / sqrt(lx ly) (a flat
+ * punch of a quarter the cell's width, F = 2 a E* delta, spread over the
+ * cell) when there is none.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+#include <string.h>
+
+#define MAX_BRACKET	60
+#define MAX_NARROW	100
+
+struct trial {
+	rc_solver *s;
+	rc_solve_result *total;
+	double delta;
+	int status;	/* worst inner status (0 or 1) */
+};
+
+/* Solve at p = e^x; *f = approach - delta.  -1 on an error, 1 on a stop. */
+static int
+eval(struct trial *tr, double x, double *f, rc_err *err)
+{
+	rc_solve_result r;
+	int st = rc_solver_solve(tr->s, exp(x), &r, err);
+
+	if (st < 0)
+		return -1;
+	tr->total->iterations += r.iterations;
+	tr->total->fft_pairs += r.fft_pairs;
+	tr->total->seconds += r.seconds;
+	tr->total->residual = r.residual;
+	if (st > 0)
+		tr->status = 1;
+	*f = rc_solver_approach(tr->s) - tr->delta;
+	return tr->s->opts.stop && *tr->s->opts.stop ? 1 : 0;
+}
+
+int
+rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
+    rc_solve_result *res, rc_err *err)
+{
+	struct trial tr = { s, res, delta, 0 };
+	double a, b, fa, fb, x, fx, step = log(4.0), tol = s->opts.tol * delta;
+	int k, r;
+
+	memset(res, 0, sizeof(*res));
+	*pressure = NAN;
+	if (!(delta > 0) || !isfinite(delta))
+		return rc_seterr(err, "approach must be positive and finite");
+	if (!s->free_bc) {
+		double sum = 0, full;
+
+		for (size_t i = 0; i < s->n; i++)
+			sum += s->height[i];
+		full = s->top - sum / (double)s->n;
+		if (!(delta < full))
+			return rc_seterr(err, "approach %g reaches full contact "
+			    "(max h - <h> = %g): a periodic body cannot be pressed "
+			    "further at a finite load", delta, full);
+	}
+	b = log(s->last_pressure > 0 ? s->last_pressure :
+	    s->opts.modulus * delta / sqrt(s->lx * s->ly));
+	if ((r = eval(&tr, b, &fb, err)) != 0)
+		goto done;
+	if (fabs(fb) <= tol)
+		goto done;
+	/* Bracket: a the other end, f(a) of the opposite sign. */
+	for (k = 0, a = b, fa = fb; k < MAX_BRACKET && (fa < 0) == (fb < 0); k++) {
+		b = a;
+		fb = fa;
+		a = fb < 0 ? b + step : b - step;
+		if ((r = eval(&tr, a, &fa, err)) != 0)
+			goto done;
+		if (fabs(fa) <= tol)
+			goto done;
+	}
+	if ((fa < 0) == (fb < 0)) {
+		r = -1;
+		rc_seterr(err, "approach %g not bracketed between p = %g and %g",
+		    delta, exp(a < b ? a : b), exp(a < b ? b : a));
+		goto done;
+	}
+	/* Illinois, b the last point evaluated. */
+	{
+		double t = a, ft = fa;
+
+		a = b;
+		fa = fb;
+		b = t;
+		fb = ft;
+	}
+	for (k = 0; k < MAX_NARROW; k++) {
+		x = b - fb * (b - a) / (fb - fa);
+		if ((r = eval(&tr, x, &fx, err)) != 0)
+			goto done;
+		if (fabs(fx) <= tol)
+			break;
+		if (fabs(b - a) < 1e-14) {
+			tr.status = 1;	/* the inner solves' noise exceeds tol */
+			break;
+		}
+		if ((fx < 0) != (fb < 0)) {
+			a = b;
+			fa = fb;
+		} else
+			fa *= 0.5;
+		b = x;
+		fb = fx;
+	}
+	if (k == MAX_NARROW)
+		tr.status = 1;
+done:
+	res->converged = r == 0 && tr.status == 0;
+	*pressure = s->last_pressure;
+	if (r < 0)
+		return -1;
+	return r > 0 ? 1 : tr.status;
+}

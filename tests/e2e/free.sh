@@ -1,0 +1,72 @@
+#!/bin/sh
+# free.sh - gfmd-solve --boundary free and --approach end to end: Hertz
+# without periodic images, load and displacement control as inverses,
+# both methods, the rows, the refusals, and a pipeline into contact-stats.
+. "$RC_TOP/tests/e2e/lib.sh"
+T=$T_TMP
+pi=3.14159265358979324
+
+# --- Hertz: h = -r^2/(2R), R = 1, on a 64^2 grid of a 1 x 1 cell, peak on
+# pixel (32, 32).  At the load F = 4 E* a^3 / (3R), a = 1/4 (cell area 1,
+# so p = F): delta = a^2/R.  tests/test_free.c measures the approach error
+# -8.3e-5 at this grid (tolerance 2e-4 here) and the contact radius within
+# dx/10 (a_r is checked to within a pixel of the radius).
+n=64
+awk -v n=$n 'BEGIN { print "# nx = " n; print "# ny = " n; print "# lx = 1"; print "# ly = 1";
+	for (j = 0; j < n; j++) { l = ""; for (i = 0; i < n; i++) { x = (i - n / 2) / n; y = (j - n / 2) / n;
+	l = l sprintf("%.17g ", -(x * x + y * y) / 2) } print l } }' > "$T/hertz.txt"
+F=$(awk 'BEGIN { printf "%.17g\n", 4 * 0.25 ^ 3 / 3 }')
+for m in fire cg; do
+	gfmd-solve -q -j 1 --boundary free --method $m --pressure-abs "$F" "$T/hertz.txt" > "$T/hz_$m.tsv"
+	check "Hertz free $m converges" test $? -eq 0
+	check_rel "Hertz free $m: approach = a^2/R" "$(col "$T/hz_$m.tsv" approach)" 0.0625 2e-4
+	check_range "Hertz free $m: a_r = pi a^2 within a pixel" "$(col "$T/hz_$m.tsv" a_r)" \
+	    "$(awk -v pi=$pi -v n=$n 'BEGIN { print pi * ((0.25 - 1 / n) ^ 2) }')" \
+	    "$(awk -v pi=$pi -v n=$n 'BEGIN { print pi * ((0.25 + 1 / n) ^ 2) }')"
+	check "Hertz free $m: boundary is free" test "$(col "$T/hz_$m.tsv" boundary)" = free
+	check_rel "Hertz free $m: one patch" "$(col "$T/hz_$m.tsv" n_patches)" 1 0
+	# Displacement control at the approach load control gave: the same
+	# load (the root find stops at tol * delta in the approach; the load
+	# then agrees to ~1e-6).
+	delta=$(col "$T/hz_$m.tsv" approach)
+	gfmd-solve -q -j 1 --boundary free --method $m --approach "$delta" "$T/hertz.txt" > "$T/hzd_$m.tsv"
+	check "Hertz free $m --approach converges" test $? -eq 0
+	check_rel "Hertz free $m: --approach gives the load back" "$(col "$T/hzd_$m.tsv" p)" "$F" 1e-5
+	check_rel "Hertz free $m: --approach reached" "$(col "$T/hzd_$m.tsv" approach)" "$delta" 1e-6
+	check_rel "Hertz free $m: same contact" "$(col "$T/hzd_$m.tsv" n_c)" "$(col "$T/hz_$m.tsv" n_c)" 0
+done
+check_rel "Hertz free: fire and cg agree on a_r" "$(col "$T/hz_fire.tsv" a_r)" "$(col "$T/hz_cg.tsv" a_r)" 0
+# The periodic solve of the same grid feels its images: its approach
+# (against the mean surface height, gfmd-solve(1)) is 40% below a^2/R.
+gfmd-solve -q -j 1 --pressure-abs "$F" "$T/hertz.txt" > "$T/hz_per.tsv"
+check "periodic is the default for a periodic grid" test "$(col "$T/hz_per.tsv" boundary)" = periodic
+check_range "Hertz periodic: approach far from a^2/R" "$(col "$T/hz_per.tsv" approach)" 0 0.05
+
+# --- Refusals.
+check_status "--boundary bogus" 2 gfmd-solve --boundary bogus -p 0.1 "$T/hertz.txt"
+check_status "--approach 0" 2 gfmd-solve --approach 0 "$T/hertz.txt"
+check_status "--approach with -p" 2 gfmd-solve --approach 0.01 -p 0.1 "$T/hertz.txt"
+check_status "--approach with --checkpoint" 2 gfmd-solve --approach 0.01 --checkpoint "$T/ck.surf" "$T/hertz.txt"
+surfgen --type sine -n 64x1 --wavelength 1 --amplitude 0.01 -o "$T/line.surf"
+check_status "free boundaries on a line grid" 1 gfmd-solve --boundary free -p 0.1 "$T/line.surf"
+check "free line: the message says why" grep -q "line contact" "$T/stderr"
+# max h - <h> of the paraboloid is about 1/12: full contact comes first.
+check_status "periodic approach beyond full contact" 1 gfmd-solve --approach 1 "$T/hertz.txt"
+check "beyond full contact: the message says why" grep -q "full contact" "$T/stderr"
+
+# --- A rough map as an isolated patch, three resolutions of one surface,
+# into contact-stats: the rows group into one problem (boundary is a key,
+# approach is an output) extrapolated over the three discretisations.  The
+# free answer differs from the periodic one (the edges are free).
+for k in 32 64 128; do
+	surfgen -n $k --seed 4 --lambda-s 0.125 -o "$T/r$k.surf"
+	gfmd-solve -q -j 1 --boundary free -p 0.05,0.1 "$T/r$k.surf" > "$T/f$k.tsv"
+done
+gfmd-solve -q -j 1 -p 0.05 "$T/r128.surf" > "$T/p128.tsv"
+check "rough free vs periodic: a_r differs" test "$(col "$T/f128.tsv" a_r)" != "$(col "$T/p128.tsv" a_r)"
+contact-stats -q -o "$T/cs.tsv" "$T/f32.tsv" "$T/f64.tsv" "$T/f128.tsv"
+check "contact-stats over free rows" test $? -eq 0
+check "contact-stats: boundary carried as a key" test "$(col "$T/cs.tsv" boundary)" = free
+check_rel "contact-stats: three discretisations in one group" "$(col "$T/cs.tsv" n_disc)" 3 0
+check_rel "contact-stats: two pressures" "$(awk 'END { print NR - 1 }' "$T/cs.tsv")" 2 0
+summary
