@@ -51,6 +51,11 @@ usage(void)
 	    "  --wisdom FILE         load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 	    "  -o FILE               table output (default stdout)   --json  JSON\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --unit U              length unit of the results (m mm um nm pm\n"
+	    "                        angstrom); the unit of an input that has none\n"
+	    "  --z-unit U            the input's heights are in length unit U\n"
+	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
+	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -60,6 +65,7 @@ static const struct option longopts[] = {
 	{ "json", no_argument, NULL, OPT_JSON },
 	{ "png", required_argument, NULL, OPT_PNG },
 	TOOL_FFT_LONGOPTS,
+	TOOL_GRID_LONGOPTS,
 	{ "mask", required_argument, NULL, OPT_MASK },
 	{ "psd", no_argument, NULL, OPT_PSD },
 	{ "psd2d", required_argument, NULL, OPT_PSD2D },
@@ -406,6 +412,7 @@ main(int argc, char **argv)
 
 	tool_fft_setup(&t);
 	g = tool_read_grid(&t, in);
+	tool_check_wrap(&t, g, in);
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)

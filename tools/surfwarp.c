@@ -42,6 +42,12 @@ usage(void)
 	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
 	    "  --png FILE            PNG preview of the result\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --unit U              length unit of the output, and of H, DEPTH, A\n"
+	    "                        (m mm um nm pm angstrom); the unit of an input\n"
+	    "                        that has none\n"
+	    "  --z-unit U            the input's heights are in length unit U\n"
+	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
+	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -57,6 +63,7 @@ static const struct option longopts[] = {
 	{ "carve-width", required_argument, NULL, OPT_CARVE_WIDTH },
 	{ "carve-rough", required_argument, NULL, OPT_CARVE_ROUGH },
 	{ "carve-seed", required_argument, NULL, OPT_CARVE_SEED },
+	TOOL_GRID_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
 
