@@ -135,7 +135,7 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 	case OPT_PERIODIC:
 	case OPT_NO_PERIODIC:
 		if (t->periodic != RC_PERIODIC_AUTO)
-			tool_bad(t, "--periodic, --no-periodic: give one");
+			tool_bad(t, "--periodic, --no-periodic: give one of them, once");
 		t->periodic = opt == OPT_PERIODIC ? RC_PERIODIC_YES : RC_PERIODIC_NO;
 		return 1;
 	case OPT_NPY_ORDER:
