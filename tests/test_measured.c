@@ -254,6 +254,9 @@ test_text(void)
 	rc_grid *g;
 	rc_read_opts o;
 
+	/* Gwyddion has no headless ASCII export (its command line converts
+	 * only to .gwy), so the header is written here in the form its
+	 * plain-text matrix export documents and writes. */
 	g = read_text("# Channel: Topography\n# Width: 10.000 \xc2\xb5m\n"
 	    "# Height: 4000 nm\n# Value units: m\n1e-9 2e-9\n3e-9 4e-9\n", NULL, &err);
 	test_true(g && g->nx == 2 && g->ny == 2 && g->lx == 10 && g->ly == 4 &&

@@ -22,6 +22,7 @@
 #include "solver.h"
 #include "spectral.h"
 #include "table.h"
+#include "units.h"
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;
@@ -193,6 +194,9 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 	if (g == NULL)
 		tool_fail(t, "%s", err.msg);
 	g->kind = kind;
+	/* Pressures (units of E*) and the mask are no lengths. */
+	if (!rc_kind_is_length(kind))
+		g->z_unit[0] = '\0';
 	if (rc_grid_meta_setd(g, "p", p, &err) != 0 ||
 	    rc_grid_meta_setd(g, "p_star", p_star, &err) != 0 ||
 	    rc_grid_meta_setd(g, "E", modulus, &err) != 0 ||
