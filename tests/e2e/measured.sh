@@ -58,6 +58,33 @@ check "... naming deg and --z-unit" grep -q "phase.gsf: values are in 'deg'.*--z
 check_status "surfstat --z-unit nm reads it" 0 surfstat -q --z-unit nm phase.gsf
 check_status "--unit furlong is a usage error" 2 surfstat -q --unit furlong s.txt
 
+# Gwyddion, a real client, opens our .gsf of the um x nm map with its size
+# and heights in metres (float32: 2^-24 relative).
+if command -v gwyddion >/dev/null 2>&1 && command -v python3 >/dev/null 2>&1; then
+	surfwarp -q -w 0 -o umnm.gsf umnm.txt
+	surfwarp -q -w 0 -o umnm-um.txt umnm.txt
+	if gwyddion --convert-to-gwy=umnm.gwy umnm.gsf >/dev/null 2>&1; then
+		# xreal, the lateral unit string and the first value of the .gwy
+		python3 -c '
+import struct, sys
+d = open("umnm.gwy", "rb").read()
+i = d.find(b"xreal\0d") + 7
+j = d.find(b"si_unit_xy")
+u = d.find(b"unitstr\0s", j) + 9
+k = d.find(b"data\0D") + 10
+print(struct.unpack("<d", d[i:i + 8])[0], d[u:d.find(b"\0", u)].decode(),
+    struct.unpack("<d", d[k:k + 8])[0])' >gwy.txt
+		first=$(awk '!/^#/ { print $1; exit }' umnm-um.txt)
+		check_rel "Gwyddion reads XReal of our .gsf: 10 um = 1e-5 m" "$(awk '{ print $1 }' gwy.txt)" 1e-5 1e-15
+		check "... in m" [ "$(awk '{ print $2 }' gwy.txt)" = m ]
+		check_rel "... and the first height in m" "$(awk '{ print $3 }' gwy.txt)" "$(awk -v z="$first" 'BEGIN { printf "%.17g", z * 1e-6 }')" 1.2e-7
+	else
+		echo "note: gwyddion --convert-to-gwy failed here: Gwyddion client check skipped"
+	fi
+else
+	echo "note: no gwyddion: Gwyddion client check skipped"
+fi
+
 # --- periodicity --------------------------------------------------------------
 surfgen -q -n 64 --seed 9 -o rough.surf
 surfstat rough.surf >/dev/null 2>warn.txt
