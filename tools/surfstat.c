@@ -146,6 +146,9 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 		tool_fail(t, "out of memory");
 	num(t, &r, "lx", g->lx);
 	num(t, &r, "ly", g->ly);
+	/* the unit of every length in the row, when the grid has one */
+	if (g->unit[0] != '\0' && rc_row_str(&r, "unit", g->unit) != 0)
+		tool_fail(t, "out of memory");
 	num(t, &r, "mean", s.mean);
 	num(t, &r, "hrms", s.hrms);
 	num(t, &r, "gbar", gbar);

@@ -35,6 +35,8 @@ check_rel "hrms of the um x nm map is in um" "$(col umnm.tsv hrms)" "$(awk -v h=
 surfstat -q --unit nm umnm.txt >nm.tsv
 check_rel "--unit nm: hrms in nm" "$(col nm.tsv hrms)" "$(awk -v h="$(col s.tsv hrms)" 'BEGIN { printf "%.17g", 1e4 * h }')" 1e-12
 check_rel "--unit nm: lx in nm" "$(col nm.tsv lx)" 10000 0
+check "--unit nm: the row says nm" [ "$(col nm.tsv unit)" = nm ]
+check "the um x nm map's row says um" [ "$(col umnm.tsv unit)" = um ]
 check_rel "--unit nm: gbar unchanged" "$(col nm.tsv gbar)" "$(col s.tsv gbar)" 1e-12
 gfmd-solve -q -j 1 -p 0.1 umnm.txt >umnm-rows.tsv
 gfmd-solve -q -j 1 -p 0.1 m.txt >m-rows.tsv
