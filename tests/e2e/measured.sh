@@ -38,12 +38,14 @@ check_rel "--unit nm: lx in nm" "$(col nm.tsv lx)" 10000 0
 check "--unit nm: the row says nm" [ "$(col nm.tsv unit)" = nm ]
 check "the um x nm map's row says um" [ "$(col umnm.tsv unit)" = um ]
 check_rel "--unit nm: gbar unchanged" "$(col nm.tsv gbar)" "$(col s.tsv gbar)" 1e-12
-gfmd-solve -q -j 1 -p 0.1 umnm.txt >umnm-rows.tsv
-gfmd-solve -q -j 1 -p 0.1 m.txt >m-rows.tsv
-# The two indenters differ by round-off (1e-16): the same contact, a_r
-# equal to far below the solver tolerance.
+# At an absolute pressure: a_r at a given p* would not see a wrong height
+# scale, a_r at a given p does.  The two indenters differ by round-off
+# (1e-16): the same contact, a_r equal to far below the solver tolerance.
+gfmd-solve -q -j 1 --pressure-abs 0.1 umnm.txt >umnm-rows.tsv
+gfmd-solve -q -j 1 --pressure-abs 0.1 m.txt >m-rows.tsv
 check_rel "gfmd-solve a_r: um x nm = m x m" "$(col umnm-rows.tsv a_r)" "$(col m-rows.tsv a_r)" 1e-9
 check_rel "gfmd-solve gbar: um x nm = m x m" "$(col umnm-rows.tsv gbar)" "$(col m-rows.tsv gbar)" 1e-12
+check_range "... a contact neither empty nor full" "$(col m-rows.tsv a_r)" 0.01 0.99
 gfmd-solve -q -j 1 -p 0.1 --unit nm --gap gap.txt umnm.txt >/dev/null
 check "gfmd-solve --unit nm: the gap field is in nm" grep -q '^# unit = nm' gap.txt
 # A plain matrix takes --unit as its unit, --z-unit as its heights'.
