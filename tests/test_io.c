@@ -672,6 +672,8 @@ test_bad_txt(void)
 	bads("txt lx only", "# lx = 3\n1 2\n3 4\n", "lx without ly");
 	bads("txt bad kind", "# kind = curvature\n1 2\n", "unknown kind");
 	bads("txt mask", "# kind = mask\n1 0\n0 2\n", "a mask holds only 0 and 1");
+	bads("txt mask NaN", "# kind = mask\n1 0\n0 nan\n", "is NaN; a mask holds only 0 and 1");
+	bads("txt Inf", "1 2\n3 -inf\n", "infinite values are not allowed");
 	put_file(tmp("ok.txt"), ok, strlen(ok));
 	r = rc_grid_read(tmp("ok.txt"), &o, &err);
 	test_true(r && r->nx == 3 && r->ny == 2 && r->z[5] == 6 && r->lx == 3 && r->ly == 4,
