@@ -198,12 +198,12 @@ FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS)
 FUZZ_READ_SRC = lib/io.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
-	lib/grid.c lib/rc_err.c lib/atomic.c
+	lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
 FUZZ_ROWS_SRC = lib/rows.c lib/rc_err.c
 .PHONY: fuzz
 fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)
 	@sh tests/fuzz/run.sh build/fuzz $(FUZZ_SECONDS) $(BIN)
-build/fuzz/fuzz_read: tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) lib/io.h lib/io_internal.h
+build/fuzz/fuzz_read: tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) lib/io.h lib/io_internal.h lib/units.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) $(PKG_LIBS) -lm
 build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/rows.h

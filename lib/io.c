@@ -480,23 +480,64 @@ rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
 
 /* What every grid must satisfy, whatever format it came in. */
 static int
-check_values(const rc_grid *g, const rc_read_opts *o, rc_err *err)
+check_values(rc_grid *g, const rc_read_opts *o, rc_err *err)
 {
 	size_t n = rc_grid_size(g);
 
-	if (!(o != NULL && o->allow_nonfinite))
+	for (size_t k = 0; k < n; k++) {
+		if (isnan(g->z[k])) {
+			if (g->kind == RC_KIND_MASK)
+				return rc_seterr(err, "mask value at i=%zu, j=%zu is NaN; "
+				    "a mask holds only 0 and 1", k % g->nx, k / g->nx);
+			/* A missing point (optical profilers leave them). */
+			if (g->valid == NULL && (g->valid = rc_malloc(n, err)) == NULL)
+				return -1;
+			continue;	/* the flags are set below */
+		}
+		if (isinf(g->z[k]) && !(o != NULL && o->allow_nonfinite))
+			return rc_seterr(err, "value at i=%zu, j=%zu is infinite; "
+			    "infinite values are not allowed (missing points are NaN)",
+			    k % g->nx, k / g->nx);
+	}
+	if (g->valid != NULL)
 		for (size_t k = 0; k < n; k++)
-			if (!isfinite(g->z[k]))
-				return rc_seterr(err, "value at i=%zu, j=%zu is %s; "
-				    "non-finite values are not allowed",
-				    k % g->nx, k / g->nx,
-				    isnan(g->z[k]) ? "NaN" : "infinite");
+			g->valid[k] = !isnan(g->z[k]);
 	if (g->kind == RC_KIND_MASK)
 		for (size_t k = 0; k < n; k++)
 			if (g->z[k] != 0 && g->z[k] != 1)
 				return rc_seterr(err, "mask value at i=%zu, j=%zu is %.17g; "
 				    "a mask holds only 0 and 1", k % g->nx, k / g->nx,
 				    g->z[k]);
+	return 0;
+}
+
+static int
+copy_unit(char *dst, size_t cap, const char *u, const char *what, rc_err *err)
+{
+	if (strlen(u) >= cap)
+		return rc_seterr(err, "%s '%.40s' longer than %zu characters", what,
+		    u, cap - 1);
+	strcpy(dst, u);
+	return 0;
+}
+
+int
+rc_grid_read_finish(rc_grid *g, const rc_read_opts *o, rc_err *err)
+{
+	if (check_values(g, o, err) != 0)
+		return -1;
+	if (o == NULL)
+		return 0;
+	if (o->periodic == RC_PERIODIC_YES)
+		g->periodic = 1;
+	else if (o->periodic == RC_PERIODIC_NO)
+		g->periodic = 0;
+	if (o->unit != NULL && g->unit[0] == '\0' &&
+	    copy_unit(g->unit, sizeof(g->unit), o->unit, "unit", err) != 0)
+		return -1;
+	if (o->z_unit != NULL && o->z_unit[0] != '\0' &&
+	    copy_unit(g->z_unit, sizeof(g->z_unit), o->z_unit, "z unit", err) != 0)
+		return -1;
 	return 0;
 }
 
@@ -531,7 +572,7 @@ rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err)
 	else
 		g = rc_txt_read(in, o, err);
 	free(in);
-	if (g != NULL && check_values(g, o, err) != 0) {
+	if (g != NULL && rc_grid_read_finish(g, o, err) != 0) {
 		rc_grid_free(g);
 		g = NULL;
 	}

@@ -40,10 +40,20 @@ typedef struct rc_read_opts {
 	const char *unit;	/* lateral unit for formats that carry none */
 	const char *z_unit;	/* the user's --z-unit: values are in this unit,
 				 * also when the file says they are not lengths */
+	int npy_xy;		/* npy arrays are (nx, ny), x the first index
+				 * (default (ny, nx): numpy's row-major image) */
 } rc_read_opts;
 
 /* The defaults: zeroes, except L = 1 x 1. */
 void rc_read_opts_init(rc_read_opts *o);
+
+/* What every reader's grid goes through (rc_grid_read_stream calls it):
+ * NaN values become missing points (g->valid), infinite values are
+ * refused unless o->allow_nonfinite, a mask must hold 0 and 1 only; then
+ * the options: periodic YES/NO overrides the file's flag, o->unit names
+ * the lateral unit of a grid that has none, o->z_unit the unit of the
+ * values whatever the file says. */
+int rc_grid_read_finish(rc_grid *g, const rc_read_opts *o, rc_err *err);
 
 /* What one channel of a file is, for listing (surfstat --channels). */
 typedef struct rc_channel_info {

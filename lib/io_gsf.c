@@ -7,9 +7,13 @@
  * base unit of XYUnits (it drops SI prefixes), so lengths in a prefixed
  * metre unit are written in metres.  Our kind, unit, metadata and history
  * travel as extra keys (surf.kind, surf.unit, surf.meta.KEY, surf.history),
- * which Gwyddion shows as metadata.
+ * which Gwyddion shows as metadata; so do the value unit and the periodic
+ * flag (surf.z_unit, surf.periodic).  A file without surf.kind is
+ * foreign (Gwyddion's, of a measurement): its units are taken as they
+ * are, and it is not periodic.  Missing points are NaN values.
  */
 #include "io_internal.h"
+#include "units.h"
 
 #include <float.h>
 #include <math.h>
@@ -18,31 +22,12 @@
 
 #define MAGIC "Gwyddion Simple Field 1.0\n"
 
-/* Units per metre: exact in double, so x / per_metre is the correctly
- * rounded length in metres (2.5 um is written as 2.5e-06). */
-static const struct {
-	const char *name;
-	double per_metre;
-} length_units[] = {
-	{ "m", 1 }, { "mm", 1e3 }, { "um", 1e6 }, { "\xc2\xb5m", 1e6 },
-	{ "nm", 1e9 }, { "pm", 1e12 },
-};
-
-/* Units per metre, or 0 if u is not a length unit we know. */
-static double
-per_metre(const char *u)
-{
-	for (size_t i = 0; i < sizeof(length_units) / sizeof(length_units[0]); i++)
-		if (strcmp(u, length_units[i].name) == 0)
-			return length_units[i].per_metre;
-	return 0;
-}
-
-/* Do the values share the length unit of the grid? */
+/* A length unit written in metres: Gwyddion reads sizes in the base unit
+ * of XYUnits (it drops SI prefixes). */
 static int
-is_length(enum rc_kind k)
+metric(const char *u)
 {
-	return k == RC_KIND_HEIGHT || k == RC_KIND_GAP || k == RC_KIND_DISPLACEMENT;
+	return u[0] != '\0' && rc_unit_is_length(u);
 }
 
 static int
@@ -61,22 +46,27 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	static const char nul[4] = { 0 };
 	size_t n = rc_grid_size(g), len = strlen(MAGIC);
-	double scale = 1, zscale = 1;
-	const char *xyunit = g->unit;
+	const char *xyunit = g->unit, *zunit = g->z_unit;
+	const char *zfrom = g->z_unit[0] ? g->z_unit : g->unit;
+	int zlength = 0;
 	char num[64];
-	float *f;
+	double *d;
 
-	/* Write lengths in metres when the unit is a prefixed metre. */
-	if (per_metre(g->unit) > 0) {
-		scale = per_metre(g->unit);
+	if (zunit[0] == '\0' && rc_kind_is_length(g->kind))
+		zunit = g->unit;
+	if (metric(xyunit))
 		xyunit = "m";
-		if (is_length(g->kind))
-			zscale = scale;
+	if (metric(zunit)) {
+		zlength = 1;
+		zunit = "m";
 	}
-	for (size_t k = 0; k < n; k++)
-		if (isfinite(g->z[k]) && fabs(g->z[k] / zscale) > FLT_MAX)
+	for (size_t k = 0; k < n; k++) {
+		double v = zlength ? rc_unit_convert(g->z[k], zfrom, "m") : g->z[k];
+
+		if (isfinite(v) && fabs(v) > FLT_MAX)
 			return rc_seterr(err, "value %g at i=%zu, j=%zu is beyond the "
 			    "float32 range of .gsf", g->z[k], k % g->nx, k / g->nx);
+	}
 	if (rc_io_write(fp, MAGIC, len, err) != 0)
 		return -1;
 	snprintf(num, sizeof(num), "%zu", g->nx);
@@ -85,17 +75,22 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	snprintf(num, sizeof(num), "%zu", g->ny);
 	if (put(fp, &len, "YRes", num, err) != 0)
 		return -1;
-	rc_format_double(num, sizeof(num), g->lx / scale);
+	rc_format_double(num, sizeof(num), metric(g->unit) ?
+	    rc_unit_convert(g->lx, g->unit, "m") : g->lx);
 	if (put(fp, &len, "XReal", num, err) != 0)
 		return -1;
-	rc_format_double(num, sizeof(num), g->ly / scale);
+	rc_format_double(num, sizeof(num), metric(g->unit) ?
+	    rc_unit_convert(g->ly, g->unit, "m") : g->ly);
 	if (put(fp, &len, "YReal", num, err) != 0)
 		return -1;
-	if (xyunit[0] != '\0' && (put(fp, &len, "XYUnits", xyunit, err) != 0 ||
-	    (is_length(g->kind) && put(fp, &len, "ZUnits", xyunit, err) != 0)))
+	if ((xyunit[0] != '\0' && put(fp, &len, "XYUnits", xyunit, err) != 0) ||
+	    (zunit[0] != '\0' && put(fp, &len, "ZUnits", zunit, err) != 0))
 		return -1;
 	if (put(fp, &len, "surf.kind", rc_kind_name(g->kind), err) != 0 ||
-	    (g->unit[0] != '\0' && put(fp, &len, "surf.unit", g->unit, err) != 0))
+	    (g->unit[0] != '\0' && put(fp, &len, "surf.unit", g->unit, err) != 0) ||
+	    (g->z_unit[0] != '\0' &&
+	    put(fp, &len, "surf.z_unit", g->z_unit, err) != 0) ||
+	    put(fp, &len, "surf.periodic", g->periodic ? "1" : "0", err) != 0)
 		return -1;
 	for (size_t i = 0; i < g->nmeta; i++) {
 		char key[300];
@@ -109,23 +104,22 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 			return -1;
 	if (rc_io_write(fp, nul, 4 - len % 4, err) != 0)
 		return -1;
-	if (zscale == 1)
+	if (!zlength)
 		return rc_io_write_values(fp, g->z, n, 4, err);
-	/* Scaled: through a small buffer. */
-	if ((f = rc_malloc(4096 * sizeof(double), err)) == NULL)
+	/* Values in metres: through a small buffer. */
+	if ((d = rc_malloc(4096 * sizeof(double), err)) == NULL)
 		return -1;
 	for (size_t k = 0; k < n; k += 4096) {
 		size_t m = n - k < 4096 ? n - k : 4096;
-		double *d = (double *)f;
 
 		for (size_t i = 0; i < m; i++)
-			d[i] = g->z[k + i] / zscale;
+			d[i] = rc_unit_convert(g->z[k + i], zfrom, "m");
 		if (rc_io_write_values(fp, d, m, 4, err) != 0) {
-			free(f);
+			free(d);
 			return -1;
 		}
 	}
-	free(f);
+	free(d);
 	return 0;
 }
 
@@ -187,8 +181,9 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	char *head = NULL, *line, *next, q[64];
 	struct field *f = NULL;
 	size_t n = 0, nf = 0, nx, ny, lineno = 1;
-	const char *v, *xyunit, *unit;
-	double lx = 1, ly = 1, scale = 1;
+	const char *v, *xyunit, *zunit, *unit, *z_to, *per;
+	double lx = 1, ly = 1;
+	int own, keep_zunit = 1;
 	rc_layout layout = { 4, 0, 0 };
 	rc_grid *g = NULL;
 	int c, kind = RC_KIND_HEIGHT;
@@ -273,31 +268,57 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 		rc_seterr(err, "surf.kind '%s' is unknown", rc_io_quote(q, sizeof(q), v, strlen(v)));
 		goto out;
 	}
-	xyunit = lookup(f, nf, "XYUnits");
-	unit = lookup(f, nf, "surf.unit");
-	/* Our own file in metres: back to the unit it was written from. */
-	if (unit != NULL && xyunit != NULL && strcmp(xyunit, "m") == 0 &&
-	    per_metre(unit) > 0)
-		scale = per_metre(unit);
-	else
-		unit = xyunit;
-	if (unit != NULL && strlen(unit) >= sizeof(g->unit)) {
+	own = lookup(f, nf, "surf.kind") != NULL;
+	xyunit = (v = lookup(f, nf, "XYUnits")) != NULL ? v : "";
+	zunit = (v = lookup(f, nf, "ZUnits")) != NULL ? v : "";
+	unit = xyunit;
+	z_to = zunit;
+	if (own) {
+		/* Our own file: lengths were written in metres; back to the
+		 * units they were written from.  Files from before surf.z_unit
+		 * had their values in surf.unit. */
+		const char *su = lookup(f, nf, "surf.unit");
+		const char *sz = lookup(f, nf, "surf.z_unit");
+
+		if (su != NULL && metric(su) && strcmp(xyunit, "m") == 0)
+			unit = su;
+		if (sz != NULL && metric(sz) && strcmp(zunit, "m") == 0)
+			z_to = sz;
+		else if (sz == NULL && su != NULL && metric(su) &&
+		    strcmp(zunit, "m") == 0 && rc_kind_is_length((enum rc_kind)kind)) {
+			z_to = su;
+			keep_zunit = 0;
+		}
+		if (su != NULL && !metric(su))
+			unit = su;
+		if (sz != NULL && !metric(sz))
+			z_to = sz;
+	}
+	if (strlen(unit) >= sizeof(g->unit) || strlen(z_to) >= sizeof(g->z_unit)) {
+		const char *u = strlen(unit) >= sizeof(g->unit) ? unit : z_to;
+
 		rc_seterr(err, "unit '%s' longer than %zu characters", rc_io_quote(q,
-		    sizeof(q), unit, strlen(unit)), sizeof(g->unit) - 1);
+		    sizeof(q), u, strlen(u)), sizeof(g->unit) - 1);
 		goto out;
 	}
-	lx *= scale;
-	ly *= scale;
+	if (strcmp(unit, xyunit) != 0) {
+		lx = rc_unit_convert(lx, xyunit, unit);
+		ly = rc_unit_convert(ly, xyunit, unit);
+	}
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		goto out;
 	if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
 		goto out;
 	g->kind = (enum rc_kind)kind;
-	if (unit != NULL)
-		strcpy(g->unit, unit);
-	if (scale != 1 && is_length(g->kind))
+	strcpy(g->unit, unit);
+	if (keep_zunit)
+		strcpy(g->z_unit, z_to);
+	if (strcmp(z_to, zunit) != 0 && metric(z_to) && metric(zunit))
 		for (size_t k = 0; k < nx * ny; k++)
-			g->z[k] *= scale;
+			g->z[k] = rc_unit_convert(g->z[k], zunit, z_to);
+	/* Ours say; a foreign file is a measured patch. */
+	per = lookup(f, nf, "surf.periodic");
+	g->periodic = own && (per == NULL || strcmp(per, "0") != 0);
 	for (size_t i = 0; i < nf; i++) {
 		const char *key = f[i].key;
 		int r = 0;

@@ -1,9 +1,13 @@
 /* io_npy.c - numpy's .npy format, versions 1.0, 2.0 and 3.0.
  *
- * Written: float64 '<f8', C order, shape (ny, nx).  Read: '<f8', '>f8',
- * '<f4', '>f4', either order, shape (ny, nx) or (n,) (a 1 x n grid).  The
- * format carries no cell size, metadata or history: the cell size comes
- * from the caller (-L), else 1.
+ * Written: float64 '<f8', C order, shape (ny, nx): a[j, i] is the value
+ * at x index i, y index j, the row-major layout of the grid (and of an
+ * image).  Read: '<f8', '>f8', '<f4', '>f4', either memory order, shape
+ * (ny, nx) or (n,) (an n x 1 grid); with o->npy_xy the shape is (nx, ny),
+ * a[i, j], as arrays of some other packages are.  The format carries no
+ * cell size, units, periodic flag, metadata or history: the cell size and
+ * unit come from the caller (-L, --unit), the grid is periodic unless the
+ * caller says otherwise, and NaN values are missing points.
  */
 #include "io_internal.h"
 
@@ -246,6 +250,11 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	if (nd == 1) {
 		nx = dim[0];
 		ny = 1;
+	} else if (nd == 2 && o != NULL && o->npy_xy) {
+		/* a[i, j]: C order stores it as our column-major */
+		nx = dim[0];
+		ny = dim[1];
+		layout.fortran = !fortran;
 	} else if (nd == 2) {
 		ny = dim[0];
 		nx = dim[1];

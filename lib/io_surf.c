@@ -1,5 +1,7 @@
 /* io_surf.c - the native format: a text header of "key = value" lines,
- * then nx*ny float64 little-endian values (see surf(5)). */
+ * then nx*ny float64 little-endian values (see surf(5)).  Missing points
+ * are NaN values (rc_grid_read_finish turns them into the mask); periodic
+ * is absent from files written before it existed, which were periodic. */
 #include "io_internal.h"
 
 #include <stdlib.h>
@@ -68,11 +70,10 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 	addkv(&head, "ly", num);
 	if (g->unit[0] != '\0')
 		addkv(&head, "unit", g->unit);
+	if (g->z_unit[0] != '\0')
+		addkv(&head, "z_unit", g->z_unit);
+	addkv(&head, "periodic", g->periodic ? "1" : "0");
 	addkv(&head, "kind", rc_kind_name(g->kind));
-	/* a finite patch says so; a periodic grid (the default) says nothing,
-	 * so that files of periodic grids are as before */
-	if (!g->periodic)
-		addkv(&head, "periodic", "0");
 	addkv(&head, "encoding", "float64-le");
 	for (size_t i = 0; i < g->nmeta; i++) {
 		add(&tail, "meta.");
@@ -150,12 +151,19 @@ split(char *line, char **key, char **val)
 	return 0;
 }
 
-enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_PERIODIC,
-	K_N };
+enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_ZUNIT,
+	K_PERIODIC, K_N };
 static const char *keys[K_N] = {
 	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset",
-	"periodic"
+	"z_unit", "periodic"
 };
+/* Keys a header may leave out: unit and z_unit (unknown), data_offset
+ * (where the header ends), periodic (1: files from before the key). */
+static int
+optional(int k)
+{
+	return k == K_UNIT || k == K_OFFSET || k == K_ZUNIT || k == K_PERIODIC;
+}
 
 /* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
  * zeros carrying the header's fields, the row count into *header_ny. */
@@ -288,8 +296,7 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		}
 	}
 	for (r = 0; r < K_N; r++)
-		if (vals[r] == NULL && r != K_UNIT && r != K_OFFSET &&
-		    r != K_PERIODIC) {
+		if (vals[r] == NULL && !optional(r)) {
 			rc_seterr(err, "header lacks the required key '%s'", keys[r]);
 			goto fail;
 		}
@@ -320,6 +327,17 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		    sizeof(q), vals[K_UNIT], strlen(vals[K_UNIT])), sizeof(g->unit) - 1);
 		goto fail;
 	}
+	if (vals[K_ZUNIT] != NULL && strlen(vals[K_ZUNIT]) >= sizeof(g->z_unit)) {
+		rc_seterr(err, "z_unit '%s' longer than %zu characters", rc_io_quote(q,
+		    sizeof(q), vals[K_ZUNIT], strlen(vals[K_ZUNIT])), sizeof(g->z_unit) - 1);
+		goto fail;
+	}
+	if (vals[K_PERIODIC] != NULL && strcmp(vals[K_PERIODIC], "0") != 0 &&
+	    strcmp(vals[K_PERIODIC], "1") != 0) {
+		rc_seterr(err, "periodic = '%s': want 0 or 1", rc_io_quote(q,
+		    sizeof(q), vals[K_PERIODIC], strlen(vals[K_PERIODIC])));
+		goto fail;
+	}
 	if (vals[K_OFFSET] != NULL && (rc_parse_size(vals[K_OFFSET], &offset) != 0 ||
 	    offset != in->consumed)) {
 		rc_seterr(err, "data_offset = %s, but the header ends at byte %llu",
@@ -329,12 +347,6 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 	}
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		goto fail;
-	if (vals[K_PERIODIC] != NULL && strcmp(vals[K_PERIODIC], "0") != 0 &&
-	    strcmp(vals[K_PERIODIC], "1") != 0) {
-		rc_seterr(err, "periodic = '%s': must be 0 or 1", rc_io_quote(q, 32,
-		    vals[K_PERIODIC], strlen(vals[K_PERIODIC])));
-		goto fail;
-	}
 	if (header_ny != NULL) {
 		*header_ny = ny;
 		if ((g = rc_grid_new(nx, 1, lx, ly, err)) == NULL)
@@ -342,9 +354,11 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
 		goto fail;
 	g->kind = (enum rc_kind)kind;
-	g->periodic = vals[K_PERIODIC] == NULL || strcmp(vals[K_PERIODIC], "1") == 0;
 	if (vals[K_UNIT] != NULL)
 		strcpy(g->unit, vals[K_UNIT]);
+	if (vals[K_ZUNIT] != NULL)
+		strcpy(g->z_unit, vals[K_ZUNIT]);
+	g->periodic = vals[K_PERIODIC] == NULL || vals[K_PERIODIC][0] == '1';
 	for (size_t i = 0; i < nmeta; i++)
 		if (rc_grid_meta_set(g, mkey[i], mval[i], err) != 0)
 			goto fail;

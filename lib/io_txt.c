@@ -1,13 +1,26 @@
 /* io_txt.c - whitespace matrix: one grid row (fixed j) per line, x fastest
  * along the line, j = 0 first.  Lines starting with '#' are comments (as
  * numpy.loadtxt has them); "# key = value" comments carry what the other
- * formats keep in their headers (nx, ny, lx, ly, unit, kind, meta.KEY,
- * history), so a round trip loses nothing.  Values are printed with %.17g,
- * which reads back exactly.
+ * formats keep in their headers (nx, ny, lx, ly, unit, z_unit, periodic,
+ * kind, meta.KEY, history), so a round trip loses nothing.  Values are
+ * printed with %.17g, which reads back exactly; missing points are "nan".
+ *
+ * Read besides: the header of Gwyddion's ASCII matrix export ("# Width:
+ * 10.000 um", "# Height:", "# Value units:", "# Channel:", "# Lateral
+ * units:"), and columns: a file of 2 or 3 values per line on 4 lines or
+ * more, without our "# nx" or Gwyddion's header, is x-z (a profile) or
+ * x-y-z (a map), never a 2- or 3-column matrix.  Columns must lie on a
+ * uniform grid (to 1% of the spacing: coordinates printed with 6
+ * significant digits on lines of up to 10^4 points are that close); any
+ * other set of points is refused, not resampled.  Periodic: our own files
+ * say (1 when they do not), a plain matrix is periodic, Gwyddion's export
+ * and columns (measurements) are not.
  */
 #include "io_internal.h"
+#include "units.h"
 
 #include <ctype.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -27,6 +40,9 @@ rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 	bad |= fprintf(fp, "# ly = %s\n", num) < 0;
 	if (g->unit[0] != '\0')
 		bad |= fprintf(fp, "# unit = %s\n", g->unit) < 0;
+	if (g->z_unit[0] != '\0')
+		bad |= fprintf(fp, "# z_unit = %s\n", g->z_unit) < 0;
+	bad |= fprintf(fp, "# periodic = %d\n", g->periodic ? 1 : 0) < 0;
 	bad |= fprintf(fp, "# kind = %s\n", rc_kind_name(g->kind)) < 0;
 	for (size_t i = 0; i < g->nmeta; i++)
 		bad |= fprintf(fp, "# meta.%s = %s\n", g->meta[i].key,
@@ -49,7 +65,13 @@ struct header {
 	int have_nx, have_ny, have_lx, have_ly, kind;
 	size_t nx, ny;
 	double lx, ly;
-	char unit[32];
+	char unit[32], z_unit[32];
+	int periodic;		/* -1 not said */
+	int own;		/* our magic line */
+	int gwy;		/* Gwyddion's export header */
+	int have_width, have_height;
+	double width, height;	/* Gwyddion's, in wunit and hunit */
+	char wunit[32], hunit[32];
 	char **mkey, **mval, **hist;
 	size_t nmeta, nhist;
 };
@@ -65,6 +87,69 @@ push(char ***v, size_t n, const char *s)
 	return (p[n] = strdup(s)) == NULL ? -1 : 0;
 }
 
+/* A unit of at most 31 bytes into dst. */
+static int
+unit_copy(char *dst, const char *s, size_t lineno, rc_err *err)
+{
+	if (strlen(s) >= 32)
+		return rc_seterr(err, "line %zu: unit longer than 31 characters", lineno);
+	strcpy(dst, s);
+	return 0;
+}
+
+/* Gwyddion's "# Key: value" header lines (English labels); anything else
+ * is a free comment.  Width and Height are "NUMBER UNIT". */
+static int
+gwy_comment(struct header *h, char *key, size_t lineno, rc_err *err)
+{
+	char *colon = strstr(key, ": "), *val, *e, q[64];
+
+	if (colon == NULL)
+		return 0;
+	*colon = '\0';
+	for (val = colon + 2; *val == ' ' || *val == '\t'; val++)
+		;
+	for (e = val + strlen(val); e > val && isspace((unsigned char)e[-1]); e--)
+		;
+	*e = '\0';
+	if (strcmp(key, "Width") == 0 || strcmp(key, "Height") == 0) {
+		int w = key[0] == 'W';
+		double *v = w ? &h->width : &h->height;
+		char *end;
+
+		*v = strtod(val, &end);
+		if (end == val || !(*v > 0) || !isfinite(*v) ||
+		    (*end != '\0' && *end != ' ' && *end != '\t'))
+			return rc_seterr(err, "line %zu: %s '%s' is not a positive "
+			    "length", lineno, key, rc_io_quote(q, sizeof(q), val,
+			    strlen(val)));
+		while (*end == ' ' || *end == '\t')
+			end++;
+		if (unit_copy(w ? h->wunit : h->hunit, end, lineno, err) != 0)
+			return -1;
+		*(w ? &h->have_width : &h->have_height) = 1;
+		h->gwy = 1;
+	} else if (strcmp(key, "Value units") == 0) {
+		if (unit_copy(h->z_unit, val, lineno, err) != 0)
+			return -1;
+		h->gwy = 1;
+	} else if (strcmp(key, "Lateral units") == 0) {
+		if (unit_copy(h->unit, val, lineno, err) != 0)
+			return -1;
+		h->gwy = 1;
+	} else if (strcmp(key, "Channel") == 0) {
+		if (push(&h->mkey, h->nmeta, "channel") != 0)
+			return rc_seterr(err, "out of memory");
+		if (push(&h->mval, h->nmeta, val) != 0) {
+			free(h->mkey[h->nmeta]);
+			return rc_seterr(err, "out of memory");
+		}
+		h->nmeta++;
+		h->gwy = 1;
+	}
+	return 0;
+}
+
 /* A "# key = value" comment we know; anything else is a free comment. */
 static int
 comment(struct header *h, char *line, size_t lineno, rc_err *err)
@@ -72,10 +157,12 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 	char *key, *eq, *val, *e, q[64];
 	int r;
 
+	if (strcmp(line, MAGIC) == 0)
+		h->own = 1;
 	for (key = line + 1; *key == ' ' || *key == '\t'; key++)
 		;
 	if ((eq = strstr(key, " = ")) == NULL)
-		return 0;
+		return gwy_comment(h, key, lineno, err);
 	*eq = '\0';
 	val = eq + 3;
 	for (e = val + strlen(val); e > val && isspace((unsigned char)e[-1]); e--)
@@ -106,6 +193,16 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 			return rc_seterr(err, "line %zu: unit longer than %zu characters",
 			    lineno, sizeof(h->unit) - 1);
 		strcpy(h->unit, val);
+	} else if (strcmp(key, "z_unit") == 0) {
+		if (strlen(val) >= sizeof(h->z_unit))
+			return rc_seterr(err, "line %zu: z_unit longer than %zu characters",
+			    lineno, sizeof(h->z_unit) - 1);
+		strcpy(h->z_unit, val);
+	} else if (strcmp(key, "periodic") == 0) {
+		if (strcmp(val, "0") != 0 && strcmp(val, "1") != 0)
+			return rc_seterr(err, "line %zu: periodic = '%s': want 0 or 1",
+			    lineno, rc_io_quote(q, sizeof(q), val, strlen(val)));
+		h->periodic = val[0] == '1';
 	} else if (strcmp(key, "kind") == 0) {
 		if ((r = rc_kind_parse(val)) < 0)
 			return rc_seterr(err, "line %zu: unknown kind '%s'", lineno,
@@ -127,10 +224,123 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 	return 0;
 }
 
+/* Gwyddion's Width and Height (each with its unit) into lx, ly in one
+ * unit, which becomes the lateral unit unless the header names one. */
+static int
+gwy_size(struct header *h, double *lx, double *ly, rc_err *err)
+{
+	*lx = h->width;
+	*ly = h->height;
+	if (strcmp(h->wunit, h->hunit) != 0) {
+		if (!rc_unit_is_length(h->wunit) || !rc_unit_is_length(h->hunit))
+			return rc_seterr(err, "Gwyddion header: Width in '%s', Height "
+			    "in '%s': not one length unit", h->wunit, h->hunit);
+		*ly = rc_unit_convert(h->height, h->hunit, h->wunit);
+	}
+	if (h->unit[0] == '\0')
+		strcpy(h->unit, h->wunit);
+	else if (strcmp(h->unit, h->wunit) != 0 && h->wunit[0] != '\0') {
+		if (!rc_unit_is_length(h->wunit) || !rc_unit_is_length(h->unit))
+			return rc_seterr(err, "Gwyddion header: Width in '%s', "
+			    "lateral units '%s'", h->wunit, h->unit);
+		*lx = rc_unit_convert(*lx, h->wunit, h->unit);
+		*ly = rc_unit_convert(*ly, h->wunit, h->unit);
+	}
+	return 0;
+}
+
+/* Does a coordinate lie on the uniform grid a0 + k d (to 1% of d)? */
+static int
+on_grid(double a, double a0, double d, size_t k)
+{
+	return fabs(a - (a0 + (double)k * d)) <= 0.01 * fabs(d);
+}
+
+/* x-z (ncol 2) or x-y-z (ncol 3) columns of n points on a uniform grid:
+ * a profile of n x 1 points, or the map they cover.  Points are taken in
+ * the order of the file, along x first or along y first; either axis may
+ * run backwards. */
+static rc_grid *
+columns(const double *v, size_t ncol, size_t n, rc_err *err)
+{
+	size_t nxg = n, nyg = 1, run, bad = n;
+	double x0 = v[0], y0 = 0, dx, dy, lx, ly;
+	int x_fast = 1;
+	rc_grid *g;
+
+	if (ncol == 3) {
+		y0 = v[1];
+		/* the length of the first run of equal y (or equal x) */
+		x_fast = v[ncol] != x0;
+		for (run = 1; run < n && v[run * ncol + (x_fast ? 1 : 0)] ==
+		    (x_fast ? y0 : x0); run++)
+			;
+		if (n % run != 0) {
+			rc_seterr(err, "%zu x-y-z points (3 values per line): the first "
+			    "line of equal %s holds %zu points, which does not divide "
+			    "%zu, so they do not form a grid; resample them to a grid, "
+			    "or add a '# nx = 3' line to read a 3-column height matrix",
+			    n, x_fast ? "y" : "x", run, n);
+			return NULL;
+		}
+		nxg = x_fast ? run : n / run;
+		nyg = x_fast ? n / run : run;
+	}
+	dx = nxg > 1 ? (v[(x_fast ? nxg - 1 : (nxg - 1) * nyg) * ncol] - x0) /
+	    (double)(nxg - 1) : 0;
+	dy = nyg > 1 ? (v[(x_fast ? (nyg - 1) * nxg : nyg - 1) * ncol + 1] - y0) /
+	    (double)(nyg - 1) : 0;
+	if (nxg > 1 && dx == 0)
+		bad = 0;
+	if (nyg > 1 && dy == 0)
+		bad = 0;
+	for (size_t k = 0; k < n && bad == n; k++) {
+		size_t i = x_fast ? k % nxg : k / nyg, j = x_fast ? k / nxg : k % nyg;
+
+		if (!on_grid(v[k * ncol], x0, dx, i) ||
+		    (ncol == 3 && !on_grid(v[k * ncol + 1], y0, dy, j)))
+			bad = k;
+	}
+	if (bad < n) {
+		if (ncol == 2)
+			rc_seterr(err, "%zu x-z points (2 values per line): x is not "
+			    "uniformly spaced (line %zu of the data: x = %g, a uniform "
+			    "step would give %g); resample the profile to a uniform "
+			    "step, or add a '# nx = 2' line to read a 2-column height "
+			    "matrix", n, bad + 1, v[bad * ncol], x0 + (double)bad * dx);
+		else
+			rc_seterr(err, "%zu x-y-z points (3 values per line) do not "
+			    "form a uniform %zux%zu grid (line %zu of the data is off "
+			    "it); resample them to a grid, or add a '# nx = 3' line to "
+			    "read a 3-column height matrix", n, nxg, nyg, bad + 1);
+		return NULL;
+	}
+	/* A line has the spacing of its one axis both ways. */
+	if (nxg == 1)
+		dx = dy;
+	if (nyg == 1)
+		dy = dx;
+	lx = (double)nxg * fabs(dx);
+	ly = (double)nyg * fabs(dy);
+	if ((g = rc_io_grid_alloc(nxg, nyg, lx, ly, err)) == NULL)
+		return NULL;
+	for (size_t k = 0; k < n; k++) {
+		size_t i = x_fast ? k % nxg : k / nyg, j = x_fast ? k / nxg : k % nyg;
+
+		if (dx < 0)
+			i = nxg - 1 - i;
+		if (dy < 0)
+			j = nyg - 1 - j;
+		g->z[j * nxg + i] = v[k * ncol + ncol - 1];
+	}
+	g->periodic = 0;	/* a measurement */
+	return g;
+}
+
 rc_grid *
 rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
-	struct header h = { 0 };
+	struct header h = { .periodic = -1 };
 	double *v = NULL, lx = 1, ly = 1;
 	size_t nv = 0, cap = 0, nx = 0, rows = 0, lineno = 1, first_line = 0;
 	size_t inrow = 0, tlen = 0;
@@ -279,11 +489,28 @@ token:
 		lx = h.lx;
 		ly = h.ly;
 	}
-	if ((g = rc_io_grid_alloc(nx, rows, lx, ly, err)) == NULL)
+	if (h.have_width != h.have_height) {
+		rc_seterr(err, "Gwyddion header gives %s without %s",
+		    h.have_width ? "Width" : "Height", h.have_width ? "Height" : "Width");
 		goto fail;
-	memcpy(g->z, v, nv * sizeof(*v));
+	}
+	if (h.have_width && gwy_size(&h, &lx, &ly, err) != 0)
+		goto fail;
+	if (!h.own && !h.have_nx && !h.have_ny && !h.have_width &&
+	    (nx == 2 || nx == 3) && rows >= 4)
+		g = columns(v, nx, rows, err);
+	else if ((g = rc_io_grid_alloc(nx, rows, lx, ly, err)) != NULL) {
+		memcpy(g->z, v, nv * sizeof(*v));
+		/* Our files say; a plain matrix is periodic by rule; Gwyddion
+		 * exports measurements. */
+		g->periodic = h.periodic >= 0 ? h.periodic : !h.gwy;
+	}
+	if (g == NULL)
+		goto fail;
+	strcpy(g->z_unit, h.z_unit);
 	g->kind = (enum rc_kind)h.kind;
-	strcpy(g->unit, h.unit);
+	if (h.unit[0] != '\0')
+		strcpy(g->unit, h.unit);
 	for (size_t i = 0; i < h.nmeta; i++)
 		if (rc_grid_meta_set(g, h.mkey[i], h.mval[i], err) != 0)
 			goto fail;

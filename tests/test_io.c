@@ -440,6 +440,35 @@ bad(const char *what, const void *p, size_t n, const char *want)
 	rc_grid_free(r);
 }
 
+/* Feed bytes; the read must succeed with exactly point k missing: valid[k]
+ * 0 and z[k] NaN, every other point valid (from a file and a stream). */
+static void
+missing(const char *what, const void *p, size_t n, size_t k)
+{
+	rc_err err = { "" };
+	rc_grid *r;
+	FILE *fp;
+
+	put_file(tmp("nan"), p, n);
+	for (int stream = 0; stream < 2; stream++) {
+		size_t nmiss = 0;
+
+		if (stream) {
+			fp = fmemopen((void *)p, n, "rb");
+			r = rc_grid_read_stream(fp, NULL, &err);
+			fclose(fp);
+		} else
+			r = rc_grid_read(tmp("nan"), NULL, &err);
+		for (size_t i = 0; r != NULL && r->valid != NULL &&
+		    i < rc_grid_size(r); i++)
+			nmiss += r->valid[i] == 0;
+		test_true(r && r->valid && k < rc_grid_size(r) && !r->valid[k] &&
+		    isnan(r->z[k]) && nmiss == 1, "%s%s: point %zu read as missing "
+		    "(%s)", what, stream ? " (stream)" : "", k, r ? "" : err.msg);
+		rc_grid_free(r);
+	}
+}
+
 static void
 bads(const char *what, const char *s, const char *want)
 {
@@ -513,7 +542,7 @@ test_bad_surf(void)
 	bad("lying size", f, n, "truncated: expected 134217728 data bytes, got 16");
 	v[2] = NAN;
 	n = make_surf(f, H2x2 "end_header\n", v, 4);
-	bad("NaN value", f, n, "i=0, j=1 is NaN");
+	missing("NaN value", f, n, 2);
 	v[2] = -INFINITY;
 	n = make_surf(f, H2x2 "end_header\n", v, 4);
 	bad("Inf value", f, n, "infinite");
@@ -582,7 +611,7 @@ test_bad_npy(void)
 	bad("npy truncated data", f, n, "truncated: expected 32 data bytes, got 31");
 	put64(d + 8, NAN, 0);
 	n = make_npy(f, 1, "{'descr': '<f8', 'fortran_order': False, 'shape': (2, 2), }", d, 32);
-	bad("npy NaN", f, n, "i=1, j=0 is NaN");
+	missing("npy NaN", f, n, 1);
 }
 
 static void
@@ -619,7 +648,7 @@ test_bad_gsf(void)
 	bad("gsf truncated padding", f, n - 2, "truncated header padding");
 	f[n - 1] = 0;
 	put32(f + n, NAN, 0);
-	bad("gsf NaN", f, n + 4, "is NaN");
+	missing("gsf NaN", f, n + 4, 0);
 	bad("gsf negative XReal", "Gwyddion Simple Field 1.0\nXRes = 1\nYRes = 1\nXReal = -1\n\0\0\0\0\0\0\0",
 	    61, "positive and finite");
 	bad("gsf huge size", "Gwyddion Simple Field 1.0\nXRes = 9000\nYRes = 9000\n\0\0", 52,
@@ -638,11 +667,13 @@ test_bad_txt(void)
 	bads("txt ragged", "1 2 3 4\n5 6 7 8\n1 2 3 4 5\n", "line 3 has 5 values, line 1 has 4");
 	bads("txt not a number", "1 2\n3 abc\n", "line 2: 'abc' is not a number");
 	bad("txt NUL", "1 2\n3 4\0\n", 9, "line 2: NUL byte");
-	bads("txt NaN", "1 2\n3 nan\n", "i=1, j=1 is NaN");
+	missing("txt NaN", "1 2\n3 nan\n", 10, 3);
 	bads("txt header lies", "# nx = 3\n1 2\n3 4\n", "header says 3x2, the data are 2x2");
 	bads("txt lx only", "# lx = 3\n1 2\n3 4\n", "lx without ly");
 	bads("txt bad kind", "# kind = curvature\n1 2\n", "unknown kind");
 	bads("txt mask", "# kind = mask\n1 0\n0 2\n", "a mask holds only 0 and 1");
+	bads("txt mask NaN", "# kind = mask\n1 0\n0 nan\n", "is NaN; a mask holds only 0 and 1");
+	bads("txt Inf", "1 2\n3 -inf\n", "infinite values are not allowed");
 	put_file(tmp("ok.txt"), ok, strlen(ok));
 	r = rc_grid_read(tmp("ok.txt"), &o, &err);
 	test_true(r && r->nx == 3 && r->ny == 2 && r->z[5] == 6 && r->lx == 3 && r->ly == 4,

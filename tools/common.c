@@ -12,6 +12,8 @@
 
 #include "atomic.h"
 #include "fft.h"
+#include "gridcheck.h"
+#include "units.h"
 
 void
 tool_init(struct tool *t, const char *name, int argc, char **argv)
@@ -126,6 +128,26 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 	case OPT_VERSION:
 		printf("%s %s\n", t->name, RC_VERSION);
 		exit(tool_exit(t, 0));
+	case OPT_UNIT:
+	case OPT_Z_UNIT:
+		if (!rc_unit_is_length(arg))
+			tool_bad(t, "%s %s: want a length unit: m, mm, um, nm, pm or "
+			    "angstrom", opt == OPT_UNIT ? "--unit" : "--z-unit", arg);
+		else
+			*(opt == OPT_UNIT ? &t->unit : &t->z_unit) = arg;
+		return 1;
+	case OPT_PERIODIC:
+	case OPT_NO_PERIODIC:
+		if (t->periodic != RC_PERIODIC_AUTO)
+			tool_bad(t, "--periodic, --no-periodic: give one of them, once");
+		t->periodic = opt == OPT_PERIODIC ? RC_PERIODIC_YES : RC_PERIODIC_NO;
+		return 1;
+	case OPT_NPY_ORDER:
+		if (strcmp(arg, "xy") != 0 && strcmp(arg, "yx") != 0)
+			tool_bad(t, "--npy-order %s: want yx (shape (ny, nx), the "
+			    "default) or xy (shape (nx, ny))", arg);
+		t->npy_xy = strcmp(arg, "xy") == 0;
+		return 1;
 	case OPT_WISDOM:
 		if (arg[0] == '\0' || rc_is_stdio(arg))
 			tool_bad(t, "--wisdom %s: want a file name", arg);
@@ -307,6 +329,10 @@ tool_read_grid(const struct tool *t, const char *path)
 	o.lx = t->lx;
 	o.ly = t->ly;
 	o.have_l = t->have_l;
+	o.unit = t->unit;
+	o.z_unit = t->z_unit;
+	o.periodic = (enum rc_periodic_opt)t->periodic;
+	o.npy_xy = t->npy_xy;
 
 	if (rc_is_stdio(path) && isatty(STDIN_FILENO))
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
@@ -314,7 +340,44 @@ tool_read_grid(const struct tool *t, const char *path)
 	if (g == NULL)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
+	if (g->valid != NULL && !t->accept_missing)
+		tool_fail(t, "%s: %zu of %zu points are missing (NaN); %s needs "
+		    "every point: fill them first with surfwarp --fill",
+		    rc_is_stdio(path) ? "standard input" : path,
+		    rc_grid_missing_count(g), rc_grid_size(g), t->name);
+	tool_grid_to_unit(t, g, path, t->unit);
 	return g;
+}
+
+void
+tool_grid_to_unit(const struct tool *t, rc_grid *g, const char *path,
+    const char *unit)
+{
+	rc_err err;
+
+	if (rc_grid_to_common_unit(g, unit, &err) != 0)
+		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		    err.msg);
+}
+
+void
+tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path)
+{
+	const char *name = rc_is_stdio(path) ? "standard input" : path;
+	double r = rc_grid_wrap_ratio(g);
+
+	if (!(r > RC_WRAP_RATIO_WARN))
+		return;
+	if (g->periodic)
+		tool_warn(t, "%s: treated as periodic, but the step across its "
+		    "edges is %.3g times the rms step inside (warning above %g): "
+		    "a measured or tilted map? If it is not periodic, say "
+		    "--no-periodic", name, r, RC_WRAP_RATIO_WARN);
+	else
+		tool_warn(t, "%s: not periodic (a measured patch), yet %s treats it "
+		    "as one period: the step across its edges, %.3g times the rms "
+		    "step inside (warning above %g), enters the results; level it "
+		    "first", name, t->name, r, RC_WRAP_RATIO_WARN);
 }
 
 void

@@ -26,6 +26,11 @@ enum {
 	OPT_WISDOM,
 	OPT_FFT_EFFORT,
 	OPT_PRETTY,
+	OPT_UNIT,
+	OPT_Z_UNIT,
+	OPT_PERIODIC,
+	OPT_NO_PERIODIC,
+	OPT_NPY_ORDER,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -45,6 +50,12 @@ struct tool {
 	const char *wisdom;	/* --wisdom FILE, else $RC_WISDOM, else NULL */
 	int fft_effort;		/* --fft-effort, -1 for the policy */
 	int fft_measured;	/* a plan was asked for with MEASURE or more */
+	/* how input grids are read (TOOL_GRID_LONGOPTS) */
+	const char *unit;	/* --unit: the length unit of the work and output */
+	const char *z_unit;	/* --z-unit: the unit of the input's values */
+	int periodic;		/* --periodic, --no-periodic (enum rc_periodic_opt) */
+	int npy_xy;		/* --npy-order xy */
+	int accept_missing;	/* the tool can use grids with missing points */
 };
 
 /* The FFT options of the tools that plan transforms; put them in the
@@ -52,6 +63,15 @@ struct tool {
 #define TOOL_FFT_LONGOPTS \
 	{ "wisdom", required_argument, NULL, OPT_WISDOM }, \
 	{ "fft-effort", required_argument, NULL, OPT_FFT_EFFORT }
+
+/* The options of the tools that read grids: units, periodicity, npy axis
+ * order (handled by tool_common_option). */
+#define TOOL_GRID_LONGOPTS \
+	{ "unit", required_argument, NULL, OPT_UNIT }, \
+	{ "z-unit", required_argument, NULL, OPT_Z_UNIT }, \
+	{ "periodic", no_argument, NULL, OPT_PERIODIC }, \
+	{ "no-periodic", no_argument, NULL, OPT_NO_PERIODIC }, \
+	{ "npy-order", required_argument, NULL, OPT_NPY_ORDER }
 
 void tool_init(struct tool *t, const char *name, int argc, char **argv);
 
@@ -98,8 +118,19 @@ int tool_length_pair(struct tool *t, const char *opt, const char *arg,
 int tool_double_list(struct tool *t, const char *opt, const char *arg,
     double **v, size_t *n);
 
-/* Read a grid (path "-" or NULL: stdin); on failure "tool: path: why", exit 1. */
+/* Read a grid (path "-" or NULL: stdin); on failure "tool: path: why", exit 1.
+ * The grid is brought to one length unit (--unit, else its own lateral
+ * unit: rc_grid_to_common_unit); one with missing points is refused,
+ * naming surfwarp --fill, unless t->accept_missing. */
 rc_grid *tool_read_grid(const struct tool *t, const char *path);
+/* Bring g (read from path) to the length unit of another grid (an --init
+ * field to its indenter's); exits 1 if it cannot be. */
+void tool_grid_to_unit(const struct tool *t, rc_grid *g, const char *path,
+    const char *unit);
+/* For a tool that treats g as periodic: warn on stderr, naming the
+ * option, when the step across its edges is far above the steps inside
+ * (rc_grid_wrap_ratio above RC_WRAP_RATIO_WARN). */
+void tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path);
 /* Append the command line to the history and write atomically; the format
  * follows the extension.  Refuses binary output to a terminal.  Exits 1 on
  * failure. */

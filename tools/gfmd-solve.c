@@ -22,6 +22,7 @@
 #include "solver.h"
 #include "spectral.h"
 #include "table.h"
+#include "units.h"
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;
@@ -139,7 +140,8 @@ usage(void)
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
 "           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
 "           [-j N] [-q]\n"
-"           [-L LX[xLY]] [FILE]\n"
+"           [-L LX[xLY]] [--unit U] [--z-unit U] [--periodic|--no-periodic]\n"
+"           [--npy-order yx|xy] [FILE]\n"
 "Solve the frictionless contact of an elastic half space (above) on the\n"
 "rigid indenter in FILE (or standard input) and write one row per pressure.\n"
 "  -p P[,P...]          reduced pressures p* = p/(E* gbar), gbar the rms\n"
@@ -177,6 +179,11 @@ usage(void)
 "  --wisdom FILE        load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 "  -q                   no progress display\n"
 "  -L LX[xLY]           cell size of an input that carries none\n"
+"  --unit U             length unit of the work and the output fields (m mm\n"
+"                       um nm pm angstrom); the unit of an input that has none\n"
+"  --z-unit U           the indenter's heights are in length unit U\n"
+"  --periodic, --no-periodic  the indenter is (not) one period of a surface\n"
+"  --npy-order yx|xy    .npy shape (ny, nx) (default) or (nx, ny)\n"
 "  -h, --help           this help\n"
 "  --version            the version\n");
 }
@@ -192,6 +199,9 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 	if (g == NULL)
 		tool_fail(t, "%s", err.msg);
 	g->kind = kind;
+	/* Pressures (units of E*) and the mask are no lengths. */
+	if (!rc_kind_is_length(kind))
+		g->z_unit[0] = '\0';
 	if (rc_grid_meta_setd(g, "p", p, &err) != 0 ||
 	    rc_grid_meta_setd(g, "p_star", p_star, &err) != 0 ||
 	    rc_grid_meta_setd(g, "E", modulus, &err) != 0 ||
@@ -206,6 +216,7 @@ main(int argc, char **argv)
 	static const struct option longopts[] = {
 		GFMD_LONGOPTS,
 		TOOL_FFT_LONGOPTS,
+		TOOL_GRID_LONGOPTS,
 		{ NULL, 0, NULL, 0 }
 	};
 	struct tool t;
@@ -247,6 +258,7 @@ main(int argc, char **argv)
 
 	tool_fft_setup(&t);
 	h = tool_read_grid(&t, input);
+	tool_check_wrap(&t, h, input);
 	if (o.resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */
@@ -336,6 +348,8 @@ main(int argc, char **argv)
 	plan_seconds = rc_clock() - plan_seconds;
 	if (o.init != NULL) {
 		rc_grid *u = tool_read_grid(&t, o.init);
+
+		tool_grid_to_unit(&t, u, o.init, h->unit);
 		if (u->nx != h->nx || u->ny != h->ny)
 			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    u->nx, u->ny, h->nx, h->ny);

@@ -80,6 +80,11 @@ usage(void)
 	    "  -o FILE               table output (default stdout)   --json  JSON\n"
 	    "  --pretty              aligned, rounded table (default on a terminal)\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --unit U              length unit of the results (m mm um nm pm\n"
+	    "                        angstrom); the unit of an input that has none\n"
+	    "  --z-unit U            the input's heights are in length unit U\n"
+	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
+	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -90,6 +95,7 @@ static const struct option longopts[] = {
 	{ "pretty", no_argument, NULL, OPT_PRETTY },
 	{ "png", required_argument, NULL, OPT_PNG },
 	TOOL_FFT_LONGOPTS,
+	TOOL_GRID_LONGOPTS,
 	{ "mask", required_argument, NULL, OPT_MASK },
 	{ "psd", no_argument, NULL, OPT_PSD },
 	{ "psd2d", required_argument, NULL, OPT_PSD2D },
@@ -179,6 +185,9 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 		tool_fail(t, "out of memory");
 	num(t, &r, "lx", g->lx);
 	num(t, &r, "ly", g->ly);
+	/* the unit of every length in the row, when the grid has one */
+	if (g->unit[0] != '\0' && rc_row_str(&r, "unit", g->unit) != 0)
+		tool_fail(t, "out of memory");
 	num(t, &r, "mean", s.mean);
 	num(t, &r, "hrms", s.hrms);
 	num(t, &r, "gbar", gbar);
@@ -664,6 +673,7 @@ main(int argc, char **argv)
 	fo.bins_per_decade = bpd;
 	fo.q_max = min_wl > 0 ? 2 * M_PI / min_wl : 0;
 	fo.q_min = max_wl > 0 ? 2 * M_PI / max_wl : 0;
+	t.accept_missing = 1;	/* refused below unless --iso, --material-ratio */
 	g = tool_read_grid(&t, in);
 	{
 		/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D
@@ -683,6 +693,7 @@ main(int argc, char **argv)
 			    "needs them filled (surfwarp --fill)",
 			    in ? in : "standard input");
 	}
+	tool_check_wrap(&t, g, in);
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)

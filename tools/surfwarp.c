@@ -76,6 +76,12 @@ usage(void)
 	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
 	    "  --png FILE            PNG preview of the result\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --unit U              length unit of the output, and of H, DEPTH, A\n"
+	    "                        (m mm um nm pm angstrom); the unit of an input\n"
+	    "                        that has none\n"
+	    "  --z-unit U            the input's heights are in length unit U\n"
+	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
+	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -98,6 +104,7 @@ static const struct option longopts[] = {
 	{ "crop", required_argument, NULL, OPT_CROP },
 	{ "resample", required_argument, NULL, OPT_RESAMPLE },
 	{ "transpose", no_argument, NULL, OPT_TRANSPOSE },
+	TOOL_GRID_LONGOPTS,
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -320,6 +327,9 @@ main(int argc, char **argv)
 
 	rc_fft_set_threads(t.threads);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
+	/* Levelling steps use the valid points; -w, --flip, --carve and the
+	 * renormalisation are refused below while points are missing. */
+	t.accept_missing = 1;
 	g = tool_read_grid(&t, in);
 	for (size_t k = 0; k < nsteps; k++) {
 		g = apply(&t, g, &steps[k], filled_mask);

@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "io_internal.h"
+#include "units.h"
 
 void
 rc_mpi_rows(size_t nx, size_t ny, size_t *rows, size_t *j0,
@@ -145,6 +146,29 @@ share_header(rc_grid *head, size_t *ny, rc_err *err)
 	return head;
 }
 
+/* Heights in another length unit than the sizes (a um x nm map) into the
+ * lateral unit, as the serial tools read them (rc_grid_to_common_unit);
+ * every rank does the same to its rows. */
+static int
+heights_to_lateral_unit(rc_grid *head, double *local, size_t n, rc_err *err)
+{
+	if (!rc_kind_is_length(head->kind) || head->z_unit[0] == '\0')
+		return 0;
+	if (!rc_unit_is_length(head->z_unit))
+		return rc_seterr(err, "values are in '%s', not a length: not a %s",
+		    head->z_unit, rc_kind_name(head->kind));
+	if (head->unit[0] == '\0') {
+		strcpy(head->unit, head->z_unit);
+		return 0;
+	}
+	if (!rc_unit_is_length(head->unit))
+		return rc_seterr(err, "lateral unit '%s' is not a length", head->unit);
+	for (size_t k = 0; k < n; k++)
+		local[k] = rc_unit_convert(local[k], head->z_unit, head->unit);
+	strcpy(head->z_unit, head->unit);
+	return 0;
+}
+
 rc_grid *
 rc_mpi_surf_read(const char *path, size_t *ny, double **local, rc_err *err)
 {
@@ -210,6 +234,13 @@ rc_mpi_surf_read(const char *path, size_t *ny, double **local, rc_err *err)
 	if (agree_any(rc == MPI_SUCCESS ? 0 : rc_seterr(err, "%s: MPI-IO read failed",
 	    path), err) != 0)
 		goto fail;
+	if (heights_to_lateral_unit(head, *local, rows * head->nx, err) != 0) {
+		char msg[RC_ERRLEN];
+
+		snprintf(msg, sizeof(msg), "%s", err->msg);
+		rc_seterr(err, "%s: %s", path, msg);
+		goto fail;
+	}
 	return head;
 fail:
 	fftw_free(*local);

@@ -56,6 +56,11 @@ for lie in nx=17 ny=15 nx=0 ny=-4 nx=1e3 nx=16.5 nx= \
 	{ surf_header $(printf '%s' "$lie" | tr ':' ' '); data_of; } >"$B/lie-$name.surf"
 done
 awk '/^data_offset = / { print "data_offset = 400"; next } { print }' "$D/good.surf" >"$B/lie-data-offset.surf"
+# units and the periodic flag: a height in deg, a lateral unit that is no
+# length, a flag that is neither 0 nor 1
+{ surf_header | sed '/^kind = /i z_unit = deg'; data_of; } >"$B/z-unit-deg.surf"
+{ surf_header | sed '/^kind = /i unit = furlong'; data_of; } >"$B/unit-furlong.surf"
+{ surf_header periodic=2; data_of; } >"$B/lie-periodic-2.surf"
 { head -c 8 "$D/good.surf"; printf 'bogus line without equals\n'; tail -c +9 "$D/good.surf"; } >"$B/not-key-value.surf"
 { head -c 8 "$D/good.surf"; printf 'nx = 16\n'; tail -c +9 "$D/good.surf"; } >"$B/duplicate-key.surf"
 { head -c 8 "$D/good.surf"; printf 'ctl = \001\n'; tail -c +9 "$D/good.surf"; } >"$B/control-char.surf"
@@ -95,6 +100,15 @@ printf '# nx = 2\n# only comments\n' >"$B/comments-only.txt"
 printf '# nx = 3\n1 2\n3 4\n' >"$B/txt-nx-lie.txt"
 printf '1 \000\n3 4\n' >"$B/nul.txt"
 printf '\r\n\r\n' >"$B/blank-lines.txt"
+# columns that are no grid, and Gwyddion headers that contradict themselves
+printf '0 1\n0.5 2\n1.7 3\n2 5\n' >"$B/xz-nonuniform.txt"
+printf '0 0 1\n1 0.3 2\n0 1 3\n1 1 4\n' >"$B/xyz-scattered.txt"
+printf '0 0 1\n1 0 2\n2 0 3\n0 1 4\n1 1 5\n' >"$B/xyz-incomplete.txt"
+printf '# Width: 10 um\n1 2\n3 4\n' >"$B/gwy-width-only.txt"
+printf '# Width: 10 um\n# Height: 2 deg\n1 2\n3 4\n' >"$B/gwy-height-deg.txt"
+printf '# Width: 10 um\n# Height: 10 um\n# Value units: V\n1 2\n3 4\n' >"$B/gwy-value-volt.txt"
+printf '# Width: -3 um\n# Height: 10 um\n1 2\n3 4\n' >"$B/gwy-width-negative.txt"
+printf '# periodic = yes\n1 2\n3 4\n' >"$B/txt-periodic-yes.txt"
 mkdir "$B/a-directory"
 nfiles=$(ls "$B" | wc -l)
 
@@ -295,6 +309,16 @@ for a in "--bins-per-decade 0" "--bins-per-decade -3" "--bins-per-decade x" \
 	expect_usage "surfstat $a" 1 surfstat $T $a "$G"
 done
 expect_usage "surfstat: three problems at once" 3 surfstat $T --bins-per-decade 0 -L -1 --nope "$G"
+for tool in surfstat surfwarp gfmd-solve; do
+	for a in "--unit furlong" "--unit deg" "--z-unit V" "--npy-order zz" \
+	    "--periodic --no-periodic"; do
+		case $tool in
+		gfmd-solve) expect_usage "$tool $a" 1 $tool $T -j 1 -p 0.1 $a "$G" ;;
+		surfwarp) expect_usage "$tool $a" 1 $tool $S $a "$G" ;;
+		*) expect_usage "$tool $a" 1 $tool $T $a "$G" ;;
+		esac
+	done
+done
 for a in "-p 0" "-p -0.1" "-p 0.1,,0.2" "-p 0.1,abc" "-p nan" "-p inf" "-p ''" \
     "-p 0.1," "-E 0" "-E -1" "-E nan" "--tol 0" "--tol -1" "--max-iter 0" \
     "--max-iter x" "--method foo" "--alpha nan" "-L 0" "--what"; do

@@ -5,7 +5,8 @@
  * reader checks before allocating).  Besides crashes, leaks, sanitizer
  * reports, hangs and allocations beyond -malloc_limit_mb, the harness
  * aborts when a reader breaks its contract: a failure without a one-line
- * message, a grid with a bad shape or a non-finite value, or the two
+ * message, a grid with a bad shape, an infinite value or a NaN that is
+ * not flagged missing, or the two
  * paths disagreeing (one accepts what the other rejects, or different
  * values).  `make fuzz` builds and runs it (see the Makefile); a crashing
  * input is kept under tests/data/fuzz/read/, which test_fuzz_replay
@@ -48,9 +49,14 @@ read_check_grid(const rc_grid *g)
 	n = g->nx * g->ny;
 	if (n / g->nx != g->ny)
 		abort();
+	/* A NaN is a missing point, flagged as one; nothing else is not
+	 * finite. */
 	for (size_t k = 0; k < n; k++)
-		if (!isfinite(g->z[k]))
+		if (isnan(g->z[k]) ? g->valid == NULL || g->valid[k] != 0 :
+		    !isfinite(g->z[k]) || (g->valid != NULL && g->valid[k] != 1))
 			abort();
+	if (g->periodic != 0 && g->periodic != 1)
+		abort();
 }
 
 int
@@ -94,7 +100,11 @@ FUZZ_ENTRY(const uint8_t *data, size_t size)
 		if (from_mem != NULL && (from_mem->nx != from_file->nx ||
 		    from_mem->ny != from_file->ny || from_mem->lx != from_file->lx ||
 		    from_mem->ly != from_file->ly || memcmp(from_mem->z, from_file->z,
-		    from_mem->nx * from_mem->ny * sizeof(double)) != 0))
+		    from_mem->nx * from_mem->ny * sizeof(double)) != 0 ||
+		    (from_mem->valid == NULL) != (from_file->valid == NULL) ||
+		    from_mem->periodic != from_file->periodic ||
+		    strcmp(from_mem->unit, from_file->unit) != 0 ||
+		    strcmp(from_mem->z_unit, from_file->z_unit) != 0))
 			abort();
 	}
 	rc_grid_free(from_mem);

@@ -181,6 +181,17 @@ check_status "gfmd-solve MPI non-.surf input" 2 $MPIRUN -np 2 \
     "$MPI_BIN/gfmd-solve" -p 0.1 t.npy
 check_status "gfmd-solve MPI missing input" 1 $MPIRUN -np 2 \
     "$MPI_BIN/gfmd-solve" -p 0.1 missing.surf
+# A um x nm map: the heights are brought to um as the serial tool does
+# (the same a_r as the serial run on the same file; at an absolute
+# pressure, since a_r at a given p* does not depend on the height scale).
+surfgen -n 32 --seed 3 -L 10 -o base.surf
+awk '/^data_offset/ { next } /^kind = / { print "unit = um"; print "z_unit = nm" }
+	{ print } /^end_header/ { exit }' base.surf | sed 's/ *$//' >umnm.surf
+off=$(awk '/^data_offset = / { print $3; exit }' base.surf)
+tail -c +"$((off + 1))" base.surf >>umnm.surf
+gfmd-solve -q -j 1 --pressure-abs 1e-4 umnm.surf >ser-umnm.tsv
+$MPIRUN -np 2 "$MPI_BIN/gfmd-solve" -q --pressure-abs 1e-4 umnm.surf >mpi-umnm.tsv
+check_rel "gfmd-solve MPI, um x nm map: a_r as serial" "$(col mpi-umnm.tsv a_r)" "$(col ser-umnm.tsv a_r)" 1e-9
 check_status "surfgen MPI refuses --png" 2 $MPIRUN -np 2 \
     "$MPI_BIN/surfgen" --png s.png -o s.surf
 check_status "surfgen MPI refuses -H with --type sine" 2 $MPIRUN -np 2 \

@@ -1,0 +1,166 @@
+#!/bin/sh
+# measured.sh - measured data through the tools: units converted before
+# any gradient (a um x nm map gives the gbar and a_r of the same map in
+# metres), non-length channels refused, the wrap-around warning, missing
+# points refused by name, arrays numpy writes in either axis order,
+# columns and the flags kept by the formats.
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+
+# A python3 with numpy, if any (pyenv shims may hide the system's).
+PY=""
+for p in python3 /usr/bin/python3; do
+	if "$p" -c 'import numpy' 2>/dev/null; then PY=$p; break; fi
+done
+
+# --- units ------------------------------------------------------------------
+# The same surface as L = 10 um with heights in nm, and as L = 1e-5 m with
+# heights in m: surfgen's (L = 1, unitless) scaled by 10 um.
+surfgen -q -n 32 --lambda-r 0.5 --seed 3 -o s.txt
+scaled() {	# scaled LX UNIT ZUNIT FACTOR
+	awk -v lx="$1" -v u="$2" -v zu="$3" -v f="$4" '
+		NR == 1 { print "# nx = 32"; print "# ny = 32"; print "# lx = " lx; print "# ly = " lx
+			print "# unit = " u; print "# z_unit = " zu }
+		/^#/ { next } { for (i = 1; i <= NF; i++) printf "%s%.17g", (i > 1 ? " " : ""), $i * f; print "" }' s.txt
+}
+scaled 10 um nm 1e4 >umnm.txt
+scaled 1e-5 m m 1e-5 >m.txt
+surfstat -q s.txt >s.tsv
+surfstat -q umnm.txt >umnm.tsv
+surfstat -q m.txt >m.tsv
+check_rel "gbar: um x nm = m x m" "$(col umnm.tsv gbar)" "$(col m.tsv gbar)" 1e-12
+check_rel "gbar: um x nm = unitless original" "$(col umnm.tsv gbar)" "$(col s.tsv gbar)" 1e-12
+check_rel "gbar_fd: um x nm = m x m" "$(col umnm.tsv gbar_fd)" "$(col m.tsv gbar_fd)" 1e-12
+check_rel "hrms of the um x nm map is in um" "$(col umnm.tsv hrms)" "$(awk -v h="$(col s.tsv hrms)" 'BEGIN { printf "%.17g", 10 * h }')" 1e-12
+surfstat -q --unit nm umnm.txt >nm.tsv
+check_rel "--unit nm: hrms in nm" "$(col nm.tsv hrms)" "$(awk -v h="$(col s.tsv hrms)" 'BEGIN { printf "%.17g", 1e4 * h }')" 1e-12
+check_rel "--unit nm: lx in nm" "$(col nm.tsv lx)" 10000 0
+check "--unit nm: the row says nm" [ "$(col nm.tsv unit)" = nm ]
+check "the um x nm map's row says um" [ "$(col umnm.tsv unit)" = um ]
+check_rel "--unit nm: gbar unchanged" "$(col nm.tsv gbar)" "$(col s.tsv gbar)" 1e-12
+# At an absolute pressure: a_r at a given p* would not see a wrong height
+# scale, a_r at a given p does.  The two indenters differ by round-off
+# (1e-16): the same contact, a_r equal to far below the solver tolerance.
+gfmd-solve -q -j 1 --pressure-abs 0.1 umnm.txt >umnm-rows.tsv
+gfmd-solve -q -j 1 --pressure-abs 0.1 m.txt >m-rows.tsv
+check_rel "gfmd-solve a_r: um x nm = m x m" "$(col umnm-rows.tsv a_r)" "$(col m-rows.tsv a_r)" 1e-9
+check_rel "gfmd-solve gbar: um x nm = m x m" "$(col umnm-rows.tsv gbar)" "$(col m-rows.tsv gbar)" 1e-12
+check_range "... a contact neither empty nor full" "$(col m-rows.tsv a_r)" 0.01 0.99
+gfmd-solve -q -j 1 -p 0.1 --unit nm --gap gap.txt umnm.txt >/dev/null
+check "gfmd-solve --unit nm: the gap field is in nm" grep -q '^# unit = nm' gap.txt
+# A plain matrix takes --unit as its unit, --z-unit as its heights'.
+awk '/^#/ { next } { print }' umnm.txt >plain.txt
+surfstat -q -L 10 --unit um --z-unit nm plain.txt >plain.tsv
+check_rel "plain matrix, -L 10 --unit um --z-unit nm" "$(col plain.tsv gbar)" "$(col s.tsv gbar)" 1e-12
+
+# A phase channel (ZUnits = deg) is not a height unless the user says so.
+printf 'Gwyddion Simple Field 1.0\nXRes = 2\nYRes = 2\nXReal = 1e-06\nYReal = 1e-06\nXYUnits = m\nZUnits = deg\n' >phase.gsf
+n=$(wc -c <phase.gsf); head -c $((4 - n % 4)) /dev/zero >>phase.gsf
+printf '\000\000\200\077\000\000\000\100\000\000\100\100\000\000\200\100' >>phase.gsf
+check_status "surfstat refuses a deg channel" 1 surfstat -q phase.gsf
+check "... naming deg and --z-unit" grep -q "phase.gsf: values are in 'deg'.*--z-unit" "$T_TMP/stderr"
+check_status "surfstat --z-unit nm reads it" 0 surfstat -q --z-unit nm phase.gsf
+check_status "--unit furlong is a usage error" 2 surfstat -q --unit furlong s.txt
+
+# Gwyddion, a real client, opens our .gsf of the um x nm map with its size
+# and heights in metres (float32: 2^-24 relative).
+if command -v gwyddion >/dev/null 2>&1 && command -v python3 >/dev/null 2>&1; then
+	surfwarp -q -w 0 -o umnm.gsf umnm.txt
+	surfwarp -q -w 0 -o umnm-um.txt umnm.txt
+	if gwyddion --convert-to-gwy=umnm.gwy umnm.gsf >/dev/null 2>&1; then
+		# xreal, the lateral unit string and the first value of the .gwy
+		python3 -c '
+import struct, sys
+d = open("umnm.gwy", "rb").read()
+i = d.find(b"xreal\0d") + 7
+j = d.find(b"si_unit_xy")
+u = d.find(b"unitstr\0s", j) + 9
+k = d.find(b"data\0D") + 10
+print(struct.unpack("<d", d[i:i + 8])[0], d[u:d.find(b"\0", u)].decode(),
+    struct.unpack("<d", d[k:k + 8])[0])' >gwy.txt
+		first=$(awk '!/^#/ { print $1; exit }' umnm-um.txt)
+		check_rel "Gwyddion reads XReal of our .gsf: 10 um = 1e-5 m" "$(awk '{ print $1 }' gwy.txt)" 1e-5 1e-15
+		check "... in m" [ "$(awk '{ print $2 }' gwy.txt)" = m ]
+		check_rel "... and the first height in m" "$(awk '{ print $3 }' gwy.txt)" "$(awk -v z="$first" 'BEGIN { printf "%.17g", z * 1e-6 }')" 1.2e-7
+	else
+		echo "note: gwyddion --convert-to-gwy failed here: Gwyddion client check skipped"
+	fi
+else
+	echo "note: no gwyddion: Gwyddion client check skipped"
+fi
+
+# --- periodicity --------------------------------------------------------------
+surfgen -q -n 64 --seed 9 -o rough.surf
+surfstat rough.surf >/dev/null 2>warn.txt
+check "a surfgen surface gives no wrap-around warning" [ ! -s warn.txt ]
+gfmd-solve -q -j 1 -p 0.1 rough.surf >/dev/null 2>warn.txt
+check "... nor in gfmd-solve" [ ! -s warn.txt ]
+# A tilted plane with noise (a measurement not levelled), as plain text:
+# periodic by the format's rule, so the tools warn and name the option.
+awk 'BEGIN { srand(4); for (j = 0; j < 32; j++) { for (i = 0; i < 32; i++)
+	printf "%s%.17g", (i ? " " : ""), 0.01 * i + 0.003 * j + 0.005 * (rand() - 0.5); print "" } }' >tilt.txt
+surfstat tilt.txt >/dev/null 2>warn.txt
+check "surfstat warns on a tilted map" grep -q "tilt.txt: treated as periodic.*--no-periodic" warn.txt
+gfmd-solve -q -j 1 -p 0.1 tilt.txt >/dev/null 2>warn.txt
+check "gfmd-solve warns on a tilted map" grep -q "tilt.txt: treated as periodic.*--no-periodic" warn.txt
+surfstat --no-periodic tilt.txt >/dev/null 2>warn.txt
+check "--no-periodic: a patch, and the warning says it is treated as periodic" grep -q "not periodic (a measured patch)" warn.txt
+surfwarp -q -w 0 --no-periodic -o tilt.surf tilt.txt
+check ".surf keeps periodic = 0" grep -aq '^periodic = 0' tilt.surf
+surfwarp -q -w 0 -o tilt.gsf tilt.surf
+surfwarp -q -w 0 -o back.txt tilt.gsf
+check ".gsf and .txt keep it" grep -q '^# periodic = 0' back.txt
+
+# --- missing points -------------------------------------------------------------
+printf '1 2 3\n4 nan 6\n7 8 9\n' >holes.txt
+check_status "surfstat refuses missing points" 1 surfstat -q holes.txt
+check "... naming surfwarp --fill" grep -q "holes.txt: 1 of 9 points are missing (NaN); surfstat needs every point: fill them first with surfwarp --fill" "$T_TMP/stderr"
+check_status "gfmd-solve refuses missing points" 1 gfmd-solve -q -j 1 -p 0.1 holes.txt
+check "... naming surfwarp --fill" grep -q "surfwarp --fill" "$T_TMP/stderr"
+
+# --- columns --------------------------------------------------------------------
+awk 'BEGIN { for (k = 0; k < 50; k++) printf "%.6g %.17g\n", 0.02 * k, sin(k / 3) }' >profile.txt
+surfstat -q profile.txt >p.tsv
+check "an x-z profile of 50 points is a 50 x 1 grid" [ "$(col p.tsv nx) $(col p.tsv ny)" = "50 1" ]
+check_rel "... of length 50 dx" "$(col p.tsv lx)" 1 1e-12
+awk 'BEGIN { for (k = 0; k < 50; k++) printf "%.6g %.17g\n", 0.02 * k * k, k }' >nonuniform.txt
+check_status "a non-uniform profile is refused" 1 surfstat -q nonuniform.txt
+check "... saying why" grep -q "x is not uniformly spaced" "$T_TMP/stderr"
+
+# --- numpy ----------------------------------------------------------------------
+if [ -n "$PY" ]; then
+	# a[j, i] = 100 j + i, shape (ny, nx) = (3, 4), in several dtypes and
+	# orders; and its transpose, shape (nx, ny), read with --npy-order xy.
+	"$PY" -c '
+import numpy as np
+a = np.array([[100 * j + i for i in range(4)] for j in range(3)], dtype=float)
+np.save("c8.npy", a)
+np.save("c4.npy", a.astype("<f4"))
+np.save("b8.npy", a.astype(">f8"))
+np.save("f8.npy", np.asfortranarray(a))
+np.save("xy.npy", a.T.copy())
+np.save("xyf.npy", np.asfortranarray(a.T))
+'
+	printf '0 1 2 3\n100 101 102 103\n200 201 202 203\n' >want.txt
+	for f in c8 c4 b8 f8; do
+		surfwarp -q -w 0 -o "$f.txt" "$f.npy"
+		grep -v '^#' "$f.txt" >got.txt
+		check "numpy $f.npy (ny, nx) read as a[j, i]" cmp -s want.txt got.txt
+	done
+	for f in xy xyf; do
+		surfwarp -q -w 0 --npy-order xy -o "$f.txt" "$f.npy"
+		grep -v '^#' "$f.txt" >got.txt
+		check "numpy $f.npy (nx, ny) with --npy-order xy" cmp -s want.txt got.txt
+	done
+	"$PY" -c '
+import numpy as np
+a = np.ones((4, 4)); a[1, 2] = np.nan
+np.save("nan.npy", a)
+'
+	check_status "a NaN in a numpy array is a missing point" 1 surfstat -q nan.npy
+	check "... 1 of 16" grep -q "1 of 16 points are missing" "$T_TMP/stderr"
+else
+	echo "note: no python3 with numpy: numpy-written arrays not tested"
+fi
+
+summary
