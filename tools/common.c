@@ -375,9 +375,11 @@ tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path)
 		    "--no-periodic", name, r, RC_WRAP_RATIO_WARN);
 	else
 		tool_warn(t, "%s: not periodic (a measured patch), yet %s treats it "
-		    "as one period: the step across its edges, %.3g times the rms "
-		    "step inside (warning above %g), enters the results; level it "
-		    "first", name, t->name, r, RC_WRAP_RATIO_WARN);
+		    "as one period here: the step across its edges, %.3g times the "
+		    "rms step inside (warning above %g), enters the results; level "
+		    "it (surfwarp --detrend) or leave out the option that makes it "
+		    "periodic (--periodic, --boundary periodic)", name, t->name, r,
+		    RC_WRAP_RATIO_WARN);
 }
 
 void

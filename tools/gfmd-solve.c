@@ -258,7 +258,6 @@ main(int argc, char **argv)
 
 	tool_fft_setup(&t);
 	h = tool_read_grid(&t, input);
-	tool_check_wrap(&t, h, input);
 	if (o.resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */
@@ -316,6 +315,8 @@ main(int argc, char **argv)
 	 * --boundary is given. */
 	o.so.boundary = o.boundary >= 0 ? (enum rc_boundary)o.boundary :
 	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
+	if (o.so.boundary == RC_BOUNDARY_PERIODIC)
+		tool_check_wrap(&t, h, input);
 	/* The analysis plan lives as long as the solver; --fd and free
 	 * boundaries need none. */
 	memset(&fft, 0, sizeof(fft));

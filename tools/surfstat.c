@@ -673,7 +673,8 @@ main(int argc, char **argv)
 	fo.bins_per_decade = bpd;
 	fo.q_max = min_wl > 0 ? 2 * M_PI / min_wl : 0;
 	fo.q_min = max_wl > 0 ? 2 * M_PI / max_wl : 0;
-	t.accept_missing = 1;	/* refused below unless --iso, --material-ratio */
+	/* only --iso and --material-ratio use the valid points alone */
+	t.accept_missing = table == T_ISO || table == T_MR;
 	g = tool_read_grid(&t, in);
 	{
 		/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D
@@ -693,7 +694,11 @@ main(int argc, char **argv)
 			    "needs them filled (surfwarp --fill)",
 			    in ? in : "standard input");
 	}
-	tool_check_wrap(&t, g, in);
+	/* Windowed spectra, the zero-padded ACF, --iso and --fit treat a
+	 * finite patch as one; the scalar row's spectral derivatives and
+	 * --by-height do not. */
+	if (g->periodic || table == T_SCALARS || table == T_BY_HEIGHT)
+		tool_check_wrap(&t, g, in);
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)

@@ -69,4 +69,33 @@ check "contact-stats over free rows" test $? -eq 0
 check "contact-stats: boundary carried as a key" test "$(col "$T/cs.tsv" boundary)" = free
 check_rel "contact-stats: three discretisations in one group" "$(col "$T/cs.tsv" n_disc)" 3 0
 check_rel "contact-stats: two pressures" "$(awk 'END { print NR - 1 }' "$T/cs.tsv")" 2 0
+# --- A measured map end to end: a tilted, non-periodic map (a Gwyddion
+# ASCII export, which carries no periodic flag: read as a finite patch)
+# -> surfwarp --detrend plane -> gfmd-solve (free boundaries by default,
+# from the periodic = 0 the detrend writes) -> contact-stats.  The map is
+# a levelled surface plus a plane of slope 0.5, so detrending gives that
+# surface back to round-off and the contact must be the same.
+surfgen -q -n 64 --seed 11 -o "$T/m.surf"
+surfwarp -q --detrend plane -o "$T/level0.txt" "$T/m.surf"
+{
+	echo "# Channel: Height"
+	echo "# Width: 1.000 m"
+	echo "# Height: 1.000 m"
+	echo "# Value units: m"
+	awk '!/^#/ { for (i = 1; i <= NF; i++) printf "%.17g%s", $i + 0.5 * (i - 1) / NF + 0.25 * (NR - 1) / 64, i < NF ? " " : "\n" }' "$T/level0.txt"
+} >"$T/measured.txt"
+surfwarp -q --detrend plane -o "$T/levelled.surf" "$T/measured.txt"
+check "detrended measured map is marked non-periodic" grep -aq '^periodic = 0$' "$T/levelled.surf"
+gfmd-solve -q -j 1 -p 0.05 -o "$T/meas.tsv" "$T/levelled.surf"
+check "a non-periodic map is solved with free boundaries by default" \
+    test "$(col "$T/meas.tsv" boundary)" = free
+gfmd-solve -q -j 1 --boundary free -p 0.05 -o "$T/orig.tsv" "$T/level0.txt"
+check_rel "levelled tilted map: the same a_r as the untilted surface" \
+    "$(col "$T/meas.tsv" a_r)" "$(col "$T/orig.tsv" a_r)" 1e-9
+gfmd-solve -q -j 1 --boundary periodic -p 0.05 -o "$T/raw.tsv" "$T/measured.txt" 2>"$T/stderr"
+check "the tilted map as if periodic warns about the wrap-around step" \
+    grep -q "step across its edges" "$T/stderr"
+check "... and gives another a_r" test "$(col "$T/raw.tsv" a_r)" != "$(col "$T/meas.tsv" a_r)"
+contact-stats -q --no-extrapolate -o "$T/mcs.tsv" "$T/meas.tsv"
+check "contact-stats takes the measured rows" test "$(col "$T/mcs.tsv" boundary)" = free
 summary
