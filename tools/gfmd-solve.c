@@ -31,9 +31,13 @@ static volatile sig_atomic_t stop_flag;
  * checkpoint is written and the same pressure goes on. */
 static volatile sig_atomic_t checkpoint_due;
 
+/* The first SIGINT/SIGTERM stops the solve (rows kept, checkpoint
+ * written); a second one ends the process at once, removing temporaries. */
 static void
 on_signal(int sig)
 {
+	if (stop_signal)
+		tool_on_signal(sig);
 	stop_signal = sig;
 	stop_flag = 1;
 }
@@ -341,7 +345,6 @@ main(int argc, char **argv)
 
 	memset(&sa, 0, sizeof(sa));
 	sa.sa_handler = on_signal;
-	sa.sa_flags = SA_RESETHAND;	/* a second signal ends the process */
 	sigemptyset(&sa.sa_mask);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
@@ -535,8 +538,11 @@ main(int argc, char **argv)
 		setitimer(ITIMER_REAL, &off, NULL);
 	}
 	rc_row_free(&row);
-	sigaction(SIGINT, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
-	sigaction(SIGTERM, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
+	/* From here a signal ends the process, removing the temporary files
+	 * of the fields being written. */
+	sa.sa_handler = tool_on_signal;
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
 	if (rc_table_end(&table, &err) != 0 || rc_atomic_commit(&out, &err) != 0) {
 		rc_atomic_abort(&out);
 		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
@@ -598,8 +604,8 @@ main(int argc, char **argv)
 		status = 1;
 	}
 	/* The run is complete: its checkpoint would only resume it again. */
-	if (o.ck_path != NULL && unlink(o.ck_path) != 0 && errno != ENOENT)
-		tool_warn(&t, "%s: %s", o.ck_path, strerror(errno));
+	if (o.ck_path != NULL && rc_atomic_remove(o.ck_path, &err) != 0)
+		tool_warn(&t, "%s", err.msg);
 	if (o.ck_path != NULL || o.resume_path != NULL)
 		rc_checkpoint_free(&ck);
 	if (o.resume_path != NULL)

@@ -155,9 +155,10 @@ main(int argc, char **argv)
 	tool_output(&t, "--png", t.png, 1);
 	/* -o may be the input (written atomically after reading it), not the
 	 * mask; the preview is never either. */
-	tool_not_input(&t, "-o", t.out, carve_mask);
-	tool_not_input(&t, "--png", t.png, in);
-	tool_not_input(&t, "--png", t.png, carve_mask);
+	tool_input(&t, "the input", in);
+	if (carve_mask != NULL)
+		tool_input(&t, "--carve", carve_mask);
+	tool_may_replace(&t, "-o", "the input");
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);

@@ -90,16 +90,24 @@ check "SIGINT landed between pressures (grids up to 1024^2), so the resume path 
 # one.  Taught: FIRE solves 256^2 to 1e-9 in less than the 0.3 s this
 # waited, so the check silently never ran; grids grow until the signal
 # lands inside a solve.
+# A signal before the solve began (reading, planning on a loaded
+# machine) kills the tool outright (143): then the same size again, with
+# twice the wait.
 terminated=0
-for n in 512 1024 2048; do
+wait_s=0.3
+for n in 512 1024 1024 2048 2048; do
 	[ -f s$n.surf ] || surfgen -n $n --seed 5 --lambda-s 0.02 -o s$n.surf
 	gfmd-solve -j 1 -q --tol $TOL -p 0.01 s$n.surf > noref.tsv 2>msg &
 	pid=$!
-	sleep 0.3
+	sleep $wait_s
 	kill -TERM $pid 2>/dev/null
 	wait $pid
 	st=$?
 	[ $st -eq 0 ] && continue
+	if [ $st -eq 143 ]; then
+		wait_s=$(awk -v w=$wait_s 'BEGIN { print 2 * w }')
+		continue
+	fi
 	terminated=1
 	check_rel "SIGTERM at n = $n: exit status 1" $st 1 0
 	grep -q 'interrupted by signal 15' msg
