@@ -50,6 +50,19 @@ on_alarm(int sig)
 	stop_flag = 1;
 }
 
+/* The --checkpoint lock, released (and its file removed) at exit, also
+ * through tool_fail. */
+static int lock_fd = -1;
+static char *lock_path;
+
+static void
+unlock_at_exit(void)
+{
+	rc_checkpoint_unlock(lock_fd, lock_path);
+	lock_fd = -1;
+	lock_path = NULL;
+}
+
 static void
 arm_timer(double minutes)
 {
@@ -241,6 +254,11 @@ main(int argc, char **argv)
 	gfmd_opts_check(&t, &o, argc, argv);
 	tool_usage_check(&t);
 	input = optind < argc ? argv[optind] : NULL;
+	if (o.ck_path != NULL) {
+		if ((lock_fd = rc_checkpoint_lock(o.ck_path, &lock_path, &err)) == -1)
+			tool_fail(&t, "--checkpoint %s: %s", o.ck_path, err.msg);
+		atexit(unlock_at_exit);
+	}
 	npressures = o.nreduced ? o.nreduced : o.nabsolute;
 
 	tool_fft_setup(&t);
@@ -422,10 +440,18 @@ main(int argc, char **argv)
 				if (rc_checkpoint_write(&ck, rc_solver_displacement(solver),
 				    o.ck_path, &err) != 0) {
 					if (stop_signal) {
-						rc_atomic_abort(&out);
-						tool_fail(&t, "interrupted by signal %d; the "
-						    "checkpoint %s could not be written: %s",
-						    (int)stop_signal, o.ck_path, err.msg);
+						rc_err werr;
+
+						/* The finished rows are kept all the same. */
+						if (k == 0 || rc_table_end(&table, &werr) != 0 ||
+						    rc_atomic_commit(&out, &werr) != 0)
+							rc_atomic_abort(&out);
+						tool_fail(&t, "interrupted by signal %d while "
+						    "solving p = %g; the checkpoint %s could not be "
+						    "written: %s; the rows of the %zu of %zu "
+						    "pressures done before it are written",
+						    (int)stop_signal, p, o.ck_path, err.msg, k,
+						    npressures);
 					}
 					tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
 					    err.msg);
@@ -506,12 +532,15 @@ main(int argc, char **argv)
 			    rc_checkpoint_write(&ck, rc_solver_displacement(solver),
 			    o.ck_path, &err) != 0) {
 				if (stop_signal) {
-					if (rc_table_end(&table, &err) != 0 ||
-					    rc_atomic_commit(&out, &err) != 0)
+					rc_err werr;
+
+					if (rc_table_end(&table, &werr) != 0 ||
+					    rc_atomic_commit(&out, &werr) != 0)
 						rc_atomic_abort(&out);
 					tool_fail(&t, "interrupted by signal %d after pressure "
 					    "%zu of %zu; the checkpoint %s could not be written: "
-					    "%s", (int)stop_signal, k + 1, npressures, o.ck_path,
+					    "%s; the rows of the pressures done are written",
+					    (int)stop_signal, k + 1, npressures, o.ck_path,
 					    err.msg);
 				}
 				tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,

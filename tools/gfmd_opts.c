@@ -108,10 +108,12 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->ck_path = arg;
 		break;
 	case OPT_CHECKPOINT_EVERY:
+		/* Each save restarts the solve: below a few tenths of a second
+		 * it would save more than it solves. */
 		if (tool_double(t, "--checkpoint-every", arg, &o->ck_every) == 0 &&
-		    !(o->ck_every > 0 && o->ck_every <= 1e6))
-			tool_bad(t, "--checkpoint-every %s: want minutes in (0, 1e6]",
-			    arg);
+		    !(o->ck_every >= GFMD_CHECKPOINT_EVERY_MIN && o->ck_every <= 1e6))
+			tool_bad(t, "--checkpoint-every %s: want minutes in [%g, 1e6]",
+			    arg, GFMD_CHECKPOINT_EVERY_MIN);
 		break;
 	case OPT_RESUME:
 		o->resume_path = arg;
