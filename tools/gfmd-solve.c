@@ -2,6 +2,7 @@
  * indenter, one result row per pressure (see gfmd-solve(1)). */
 #include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -429,7 +430,10 @@ main(int argc, char **argv)
 				rc_atomic_abort(&out);
 				tool_fail(&t, "p = %g: %s", p, err.msg);
 			}
-			iterations += res.iterations;
+			/* Saturating: a resumed count (up to LONG_MAX from the
+			 * checkpoint) plus this piece must not overflow. */
+			iterations = res.iterations > LONG_MAX - iterations ?
+			    LONG_MAX : iterations + res.iterations;
 			seconds += res.seconds;
 			if (r == 0 || !stop_flag)
 				break;
