@@ -260,6 +260,9 @@ tool_may_replace(struct tool *t, const char *out_opt, const char *in_opt)
 void
 tool_usage_check(struct tool *t)
 {
+	/* --wisdom is read and rewritten: an output like any other. */
+	if (t->wisdom != NULL)
+		add_file(t, "--wisdom", t->wisdom, 1);
 	check_files(t);
 	if (t->nbad == 0)
 		return;

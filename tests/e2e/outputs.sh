@@ -150,6 +150,7 @@ check_status "gfmd-solve --checkpoint = --gap" 2 gfmd-solve -q -p 0.1 --checkpoi
 check_status "gfmd-solve --gap = --pressure" 2 gfmd-solve -q -p 0.1 --gap f.surf --pressure ./f.surf h.surf
 check_status "gfmd-solve --png = -o (existing, through a link)" 2 gfmd-solve -q -p 0.1 --png link.surf -o target.surf h.surf
 check_status "surfstat --psd2d = --gnuplot" 2 surfstat --psd --psd2d p.surf --gnuplot p.surf h.surf
+check_status "surfgen --wisdom = -o" 2 surfgen -n 8 --wisdom w.surf -o w.surf
 check_status "contact-stats --gnuplot = -o" 2 contact-stats --no-extrapolate --gnuplot k.gp -o k.gp rows.tsv
 gfmd-solve -q -p 0.1,0.2 --max-iter 2 --checkpoint ck.surf -o "$NULLDEV" h.surf 2>/dev/null
 cp h.surf ck.surf
@@ -178,21 +179,20 @@ check "  the same heights as a fresh output" cmp -s fresh.bin inplace2.bin
 # temporary, and what it leaves is complete (outputs finished before it
 # are kept).  If the tool finished before its
 # temporary file was seen, the case cannot be tested here and is skipped.
-killed_while_writing() {	# DESC NAME CMD...: run in sig/, killed when .NAME.* appears
+killed_while_writing() {	# DESC RE CMD...: run in sig/, killed when a temporary .RE.* appears
 	what=$1 name=$2; shift 2
 	rm -rf sig; mkdir sig
 	(cd sig && exec "$@") 2>sig.err >/dev/null & pid=$!
 	n=0
-	while [ $n -lt 600 ] && ! ls -A sig | grep -q "^\.$name\." && kill -0 $pid 2>/dev/null; do
+	while [ $n -lt 600 ] && ! ls -A sig | grep -Eq "^\.($name)\." && kill -0 $pid 2>/dev/null; do
 		sleep 0.05; n=$((n + 1))
 	done
 	seen=$(ls -A sig | tr '\n' ' ')
 	kill -TERM $pid 2>/dev/null; killed=$?
 	wait $pid; st=$?
-	case $seen in
-	*.$name.*) ;;
-	*) skip 4 "$what: no temporary file seen before the tool ended ($seen)"; return ;;
-	esac
+	if ! echo "$seen" | tr ' ' '\n' | grep -Eq "^\.($name)\."; then
+		skip 4 "$what: no temporary file seen before the tool ended ($seen)"; return
+	fi
 	[ $killed = 0 ] || { skip 4 "$what: the tool ended before the signal"; return; }
 	check "$what: dies of SIGTERM (exit $st, want 143)" [ "$st" = 143 ]
 	check "$what: no temporary file left ($(ls -A sig | tr '\n' ' '))" \
@@ -206,9 +206,9 @@ killed_while_writing() {	# DESC NAME CMD...: run in sig/, killed when .NAME.* ap
 	check "$what: every output left is complete" [ $ok = 1 ]
 	check "$what: says so" grep -q "terminated (SIGTERM); unfinished output files removed" sig.err
 }
-killed_while_writing "surfgen -o big.txt" big.txt surfgen -n 1024 -o big.txt
+killed_while_writing "surfgen -o big.txt" 'big\.txt' surfgen -n 1024 -o big.txt
 surfgen -n 512 -o big.surf
-killed_while_writing "gfmd-solve, fields" gap.txt gfmd-solve -q --max-iter 1 -p 0.1 \
+killed_while_writing "gfmd-solve, fields" '(gap|p|u)\.txt' gfmd-solve -q --max-iter 1 -p 0.1 \
     --gap gap.txt --pressure p.txt --displacement u.txt -o rows.tsv ../big.surf
 
 # --- any command line makes a file the toolkit reads back ------------------
