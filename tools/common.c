@@ -553,16 +553,3 @@ tool_exit(const struct tool *t, int status)
 	free(t->cmdline);
 	return status;
 }
-
-void
-tool_not_input(struct tool *t, const char *opt, const char *out, const char *in)
-{
-	struct stat so, si;
-
-	if (out == NULL || in == NULL || rc_is_stdio(out) || rc_is_stdio(in))
-		return;
-	if (stat(out, &so) == 0 && stat(in, &si) == 0 && so.st_dev == si.st_dev &&
-	    so.st_ino == si.st_ino)
-		tool_bad(t, "%s %s: that is the input %s; refusing to replace it "
-		    "with output of another kind", opt, out, in);
-}

@@ -141,12 +141,5 @@ void tool_check_grid_path(struct tool *t, const char *opt, const char *path);
 
 /* Flush stdout and turn a write error into exit status 1. */
 int tool_exit(const struct tool *t, int status);
-/* tool_bad if the output path names the same file as the input path (an
- * existing file, by device and inode): for outputs of another kind than
- * the input, where writing would replace what the user had (a table over
- * the surface it describes).  Either may be NULL or "-". */
-void tool_not_input(struct tool *t, const char *opt, const char *out,
-    const char *in);
-
 
 #endif
