@@ -2,6 +2,7 @@
 #include "common.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdarg.h>
@@ -44,6 +45,14 @@ tool_init(struct tool *t, const char *name, int argc, char **argv)
 	static const int sigs[] = { SIGINT, SIGTERM, SIGHUP };
 	size_t len = 1;
 
+	/* A closed standard descriptor would be taken by the next file opened
+	 * (an output), and messages to stderr would land in it: hold each
+	 * with /dev/null, read-only for stdin and stdout, so that a table to
+	 * a closed stdout still fails (EBADF) instead of vanishing. */
+	for (int fd = 0; fd <= 2; fd++)
+		if (fcntl(fd, F_GETFD) < 0 && errno == EBADF &&
+		    open("/dev/null", fd == 2 ? O_WRONLY : O_RDONLY) != fd)
+			exit(125);
 	signal_name = name;
 	for (size_t k = 0; k < sizeof(sigs) / sizeof(sigs[0]); k++) {
 		struct sigaction sa, old;

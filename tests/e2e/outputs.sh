@@ -224,6 +224,14 @@ ckc=$(printf 'ck\002.surf')
 gfmd-solve -q -p 0.1,0.2 --max-iter 2 --checkpoint "$ckc" -o /dev/null "$ctl" 2>/dev/null
 check "  gfmd-solve on it leaves no checkpoint at the end" [ ! -e "$ckc" ]
 
+# --- closed standard descriptors ------------------------------------------
+# With stderr closed the warning (not converged) must not land in the
+# table that took its descriptor; with stdout closed a table fails.
+gfmd-solve -q -p 0.1 --max-iter 3 -o closed.tsv h.surf 2>&-
+check "stderr closed: the table has no warning in it" [ "$(grep -c 'converged' closed.tsv)" = 0 ]
+check "stderr closed: the table is whole (header and one row)" [ "$(awk 'END { print NR }' closed.tsv)" = 2 ]
+check_status "stdout closed: a table to stdout fails" 1 sh -c 'surfstat h.surf >&-'
+
 # --- outputs that could not be written are refused before any work --------
 check_status "gfmd-solve --gap in a missing directory" 2 gfmd-solve -q -p 0.1 --gap nodir/g.surf h.surf
 check_status "gfmd-solve -o ''" 2 gfmd-solve -q -p 0.1 -o '' h.surf
