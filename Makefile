@@ -1,6 +1,6 @@
 # Makefile - build, test, install and demo the rough-contact toolkit.
 #   make                 library and tools into bin/
-#   make check           all tests; ends with "N passed, N failed"
+#   make check           all tests; ends with "N passed, N failed[, N skipped]"
 #   make check SANITIZE=1  the same under AddressSanitizer + UBSan
 #   make demo            the built-in default example
 #   make bench           benchmarks (print figures, never fail on time)

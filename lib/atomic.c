@@ -45,14 +45,17 @@ pending_remove(const char *tmp)
 		}
 }
 
-void
+int
 rc_atomic_unlink_pending(void)
 {
+	int n = 0;
+
 	for (int i = 0; i < RC_ATOMIC_SLOTS; i++)
 		if (pending_used[i]) {
-			unlink(pending_name[i]);
+			n += unlink(pending_name[i]) == 0;
 			pending_used[i] = 0;
 		}
+	return n;
 }
 
 int
@@ -132,6 +135,77 @@ follow_links(const char *path, rc_err *err)
 		cur = next;
 	}
 	return cur;
+}
+
+int
+rc_atomic_check(const char *path, rc_err *err)
+{
+	struct stat st;
+	char *target, *slash;
+	int named, flags, r = 0;
+
+	if (rc_is_stdio(path))
+		return 0;
+	if (*path == '\0')
+		return rc_seterr(err, "an output file name is empty");
+	if ((named = named_descriptor(path)) >= 0) {
+		if ((flags = fcntl(named, F_GETFL)) < 0)
+			return rc_seterr(err, "%s: descriptor %d is not open", path,
+			    named);
+		if ((flags & O_ACCMODE) == O_RDONLY)
+			return rc_seterr(err, "%s: descriptor %d is open for reading "
+			    "only", path, named);
+		return 0;
+	}
+	if ((target = follow_links(path, err)) == NULL)
+		return -1;
+	if (stat(target, &st) == 0) {
+		if (S_ISDIR(st.st_mode))
+			r = rc_seterr(err, "%s: is a directory", path);
+		else if (!S_ISREG(st.st_mode)) {
+			if (faccessat(AT_FDCWD, target, W_OK, AT_EACCESS) != 0)
+				r = rc_seterr(err, "%s: %s", path, strerror(errno));
+			free(target);
+			return r;
+		}
+	}
+	if (r == 0 && (slash = strrchr(target, '/')) != NULL && slash[1] == '\0')
+		r = rc_seterr(err, "%s: names a directory, not a file", path);
+	if (r == 0) {
+		/* the directory the temporary file goes to */
+		const char *dir = ".";
+
+		if ((slash = strrchr(target, '/')) != NULL) {
+			slash[slash == target] = '\0';	/* "/x" -> "/" */
+			dir = target;
+		}
+		if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+			r = rc_seterr(err, "%s: the directory %s does not exist",
+			    path, dir);
+		else if (faccessat(AT_FDCWD, dir, W_OK | X_OK, AT_EACCESS) != 0)
+			r = rc_seterr(err, "%s: cannot create a file in %s: %s", path,
+			    dir, strerror(errno));
+	}
+	free(target);
+	return r;
+}
+
+int
+rc_atomic_remove(const char *path, rc_err *err)
+{
+	struct stat st;
+	char *target;
+	int r = 0;
+
+	if (rc_is_stdio(path) || named_descriptor(path) >= 0)
+		return 0;
+	if ((target = follow_links(path, err)) == NULL)
+		return -1;
+	if (lstat(target, &st) == 0 && S_ISREG(st.st_mode) &&
+	    unlink(target) != 0 && errno != ENOENT)
+		r = rc_seterr(err, "%s: %s", path, strerror(errno));
+	free(target);
+	return r;
 }
 
 static int

@@ -38,10 +38,23 @@ int rc_atomic_commit(rc_atomic *a, rc_err *err);
 void rc_atomic_abort(rc_atomic *a);
 /* 1 if path means standard output. */
 int rc_is_stdio(const char *path);
+/* 0 if rc_atomic_open(path) would find what it needs now, so that a tool
+ * can refuse a bad output before hours of work: a non-empty name that is
+ * not a directory; an open descriptor for /dev/fd/N; write permission on
+ * an existing device, FIFO or socket; otherwise an existing directory
+ * (after links) where this process may create the temporary file.
+ * Creates nothing; -1 with err set otherwise. */
+int rc_atomic_check(const char *path, rc_err *err);
+
+/* Remove an output that is no longer wanted (a finished run's
+ * checkpoint): the regular file path names, through links; a device,
+ * FIFO or socket is left alone, and so is a missing file.  -1 with err set
+ * if the removal fails. */
+int rc_atomic_remove(const char *path, rc_err *err);
 
 /* The temporary files of every rc_atomic still open in this process, for
  * a signal handler that must remove them before the process dies
  * (async-signal-safe: only unlink(2) on fixed buffers). */
-void rc_atomic_unlink_pending(void);
+int rc_atomic_unlink_pending(void);	/* returns how many were removed */
 
 #endif

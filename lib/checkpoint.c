@@ -3,15 +3,22 @@
 #include "checkpoint.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <inttypes.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "io.h"
+#include "solver.h"
 
-#define VERSION 1
+/* 2: the identity hash covers metadata, units and the missing-point mask */
+#define VERSION 2
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL
 
@@ -34,6 +41,17 @@ fnv_double(uint64_t h, double d)
 	return fnv_u64(h, v);
 }
 
+/* The bytes of s and its terminating NUL (so "ab","c" and "a","bc" differ). */
+static uint64_t
+fnv_str(uint64_t h, const char *s)
+{
+	do {
+		h ^= (unsigned char)*s;
+		h *= FNV_PRIME;
+	} while (*s++ != '\0');
+	return h;
+}
+
 uint64_t
 rc_checkpoint_hash(const rc_grid *g)
 {
@@ -46,6 +64,17 @@ rc_checkpoint_hash(const rc_grid *g)
 	h = fnv_double(h, g->ly);
 	for (k = 0; k < n; k++)
 		h = fnv_double(h, g->z[k]);
+	/* What else reaches the rows or the solve: the metadata (carried as
+	 * columns), units, the periodic flag and missing points. */
+	h = fnv_u64(h, g->nmeta);
+	for (k = 0; k < g->nmeta; k++)
+		h = fnv_str(fnv_str(h, g->meta[k].key), g->meta[k].val);
+	h = fnv_str(fnv_str(h, g->unit), g->z_unit);
+	h = fnv_u64(h, (uint64_t)g->periodic);
+	h = fnv_u64(h, g->valid != NULL);
+	if (g->valid != NULL)
+		for (k = 0; k < n; k++)
+			h = fnv_u64(h, g->valid[k]);
 	return h;
 }
 
@@ -352,8 +381,24 @@ need_double(const rc_grid *g, const char *key, double *v, rc_err *err)
 	return 0;
 }
 
+/* A number in [lo, hi] (open at an end where open_lo / open_hi). */
 static int
-need_long(const rc_grid *g, const char *key, long lo, long *v, rc_err *err)
+need_range(const rc_grid *g, const char *key, double lo, int open_lo,
+    double hi, int open_hi, double *v, rc_err *err)
+{
+	if (need_double(g, key, v, err) != 0)
+		return -1;
+	if (!isfinite(*v) || (open_lo ? !(*v > lo) : !(*v >= lo)) ||
+	    (open_hi ? !(*v < hi) : !(*v <= hi)))
+		return rc_seterr(err, "meta.%s = %s: want a number in %c%g, %g%c",
+		    key, rc_grid_meta_get(g, key), open_lo ? '(' : '[', lo, hi,
+		    open_hi ? ')' : ']');
+	return 0;
+}
+
+static int
+need_long(const rc_grid *g, const char *key, long lo, long hi, long *v,
+    rc_err *err)
 {
 	const char *s = need(g, key, err);
 	char *end;
@@ -362,9 +407,9 @@ need_long(const rc_grid *g, const char *key, long lo, long *v, rc_err *err)
 		return -1;
 	errno = 0;
 	*v = strtol(s, &end, 10);
-	if (end == s || *end != '\0' || errno != 0 || *v < lo)
-		return rc_seterr(err, "meta.%s = %s: want an integer of at least %ld",
-		    key, s, lo);
+	if (end == s || *end != '\0' || errno != 0 || *v < lo || *v > hi)
+		return rc_seterr(err, "meta.%s = %s: want an integer from %ld to %ld",
+		    key, s, lo, hi);
 	return 0;
 }
 
@@ -409,7 +454,7 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	c->ny = g->ny;
 	c->lx = g->lx;
 	c->ly = g->ly;
-	if (need_long(g, "checkpoint.version", 0, &v, err) != 0)
+	if (need_long(g, "checkpoint.version", 0, LONG_MAX, &v, err) != 0)
 		goto bad;
 	if (v != VERSION) {
 		rc_seterr(err, "checkpoint version %ld, this program reads %d", v,
@@ -426,18 +471,19 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	}
 	if ((s = need(g, "checkpoint.method", err)) == NULL)
 		goto bad;
-	if (strlen(s) >= sizeof(c->method)) {
+	if (strlen(s) >= sizeof(c->method) || rc_method_parse(s) < 0) {
 		rc_seterr(err, "meta.checkpoint.method = %s: unknown", s);
 		goto bad;
 	}
 	strcpy(c->method, s);
-	if (need_double(g, "checkpoint.tol", &c->tol, err) ||
-	    need_double(g, "checkpoint.E", &c->modulus, err) ||
-	    need_double(g, "checkpoint.alpha", &c->alpha, err) ||
-	    need_long(g, "checkpoint.fd", 0, &v, err))
+	/* The ranges gfmd-solve accepts for the options. */
+	if (need_range(g, "checkpoint.tol", 0, 1, 1, 1, &c->tol, err) ||
+	    need_range(g, "checkpoint.E", 0, 1, HUGE_VAL, 1, &c->modulus, err) ||
+	    need_range(g, "checkpoint.alpha", 0, 0, 1, 0, &c->alpha, err) ||
+	    need_long(g, "checkpoint.fd", 0, 1, &v, err))
 		goto bad;
 	c->fd = v != 0;
-	if (need_long(g, "checkpoint.max_iter", 1, &c->max_iter, err) ||
+	if (need_long(g, "checkpoint.max_iter", 1, LONG_MAX, &c->max_iter, err) ||
 	    (s = need(g, "checkpoint.pressure_kind", err)) == NULL)
 		goto bad;
 	if (strcmp(s, "reduced") != 0 && strcmp(s, "absolute") != 0) {
@@ -448,7 +494,7 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	c->reduced = strcmp(s, "reduced") == 0;
 	if ((s = need(g, "checkpoint.pressures", err)) == NULL ||
 	    parse_list(c, s, err) != 0 ||
-	    need_long(g, "checkpoint.next", 0, &v, err) != 0)
+	    need_long(g, "checkpoint.next", 0, LONG_MAX, &v, err) != 0)
 		goto bad;
 	if ((size_t)v > c->npressures) {
 		rc_seterr(err, "meta.checkpoint.next = %ld: the list has %zu "
@@ -463,8 +509,30 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 		goto bad;
 	}
 	c->solving = strcmp(s, "solving") == 0;
-	if (need_long(g, "checkpoint.iterations", 0, &c->iterations, err) != 0)
+	/* solving: pressures[next] exists; between: pressures[next - 1] does */
+	if (c->solving ? c->next >= c->npressures : c->next == 0) {
+		rc_seterr(err, "meta.checkpoint.state = %s with next = %zu of %zu "
+		    "pressures: inconsistent", s, c->next, c->npressures);
 		goto bad;
+	}
+	if (need_long(g, "checkpoint.iterations", 0, LONG_MAX, &c->iterations,
+	    err) != 0)
+		goto bad;
+	if (!c->solving && c->iterations != 0) {
+		rc_seterr(err, "meta.checkpoint.iterations = %ld between pressures: "
+		    "want 0", c->iterations);
+		goto bad;
+	}
+	if (g->kind != RC_KIND_DISPLACEMENT) {
+		rc_seterr(err, "kind %s: a checkpoint holds a displacement",
+		    rc_kind_name(g->kind));
+		goto bad;
+	}
+	for (size_t k = 0; k < rc_grid_size(g); k++)
+		if (!isfinite(g->z[k])) {
+			rc_seterr(err, "displacement value %zu is not finite", k);
+			goto bad;
+		}
 	if (c->next > 0) {
 		const char *cols, *types;
 		size_t ncols = 1;
@@ -502,6 +570,65 @@ bad:
 	rc_grid_free(g);
 	rc_checkpoint_free(c);
 	return -1;
+}
+
+int
+rc_checkpoint_lock(const char *path, char **lock_path, rc_err *err)
+{
+	const char *slash = strrchr(path, '/'), *base = slash ? slash + 1 : path;
+	size_t dirlen = (size_t)(base - path);
+	struct stat st, held;
+	char *name;
+	int fd;
+
+	*lock_path = NULL;
+	if (stat(path, &st) == 0 && !S_ISREG(st.st_mode))
+		return -2;
+	if ((name = malloc(strlen(path) + 8)) == NULL)
+		return rc_seterr(err, "out of memory");
+	memcpy(name, path, dirlen);
+	sprintf(name + dirlen, ".%s.lock", base);
+	/* A holder removes the file before it releases the lock; a lock on a
+	 * file that is no longer the one under this name is retried. */
+	for (int tries = 0; tries < 100; tries++) {
+		if ((fd = open(name, O_RDWR | O_CREAT | O_CLOEXEC, 0666)) < 0) {
+			rc_seterr(err, "%s: cannot create the lock file: %s", name,
+			    strerror(errno));
+			free(name);
+			return -1;
+		}
+		if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+			int e = errno;
+
+			close(fd);
+			if (e == EWOULDBLOCK)
+				rc_seterr(err, "another run is using this checkpoint "
+				    "(it holds %s)", name);
+			else
+				rc_seterr(err, "%s: cannot lock: %s", name, strerror(e));
+			free(name);
+			return -1;
+		}
+		if (fstat(fd, &held) == 0 && stat(name, &st) == 0 &&
+		    held.st_dev == st.st_dev && held.st_ino == st.st_ino) {
+			*lock_path = name;
+			return fd;
+		}
+		close(fd);
+	}
+	free(name);
+	return rc_seterr(err, "%s: the lock file keeps changing", path);
+}
+
+void
+rc_checkpoint_unlock(int fd, char *lock_path)
+{
+	if (fd >= 0) {
+		if (lock_path != NULL)
+			unlink(lock_path);
+		close(fd);
+	}
+	free(lock_path);
 }
 
 /* Same bits, so that 0.1 written and read back compares equal. */

@@ -6,8 +6,9 @@
  * height u of the solve in progress (or of the last finished one), whose
  * metadata, all under "checkpoint.", say what it belongs to:
  *   version        1
- *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly and
- *                  the bit patterns of its heights), 16 hex digits
+ *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly, the
+ *                  bit patterns of its heights, its metadata, units,
+ *                  periodic flag and missing-point mask), 16 hex digits
  *   method, tol, E, alpha, fd, max_iter   the options that decide the rows
  *   pressure_kind  reduced (-p) or absolute (--pressure-abs)
  *   pressures      the full list, comma-separated, exact to the last bit
@@ -53,8 +54,11 @@ typedef struct rc_checkpoint {
 	size_t nrows;
 } rc_checkpoint;
 
-/* FNV-1a over nx, ny, lx, ly and every height's bit pattern (byte order
- * fixed, little-endian), so the same indenter gives the same hash anywhere. */
+/* FNV-1a over nx, ny, lx, ly, every height's bit pattern (byte order
+ * fixed, little-endian), the metadata keys and values, the units, the
+ * periodic flag and the missing-point mask, so the same indenter gives the
+ * same hash anywhere, and one whose rows would differ (other metadata
+ * columns) does not. */
 uint64_t rc_checkpoint_hash(const rc_grid *indenter);
 
 /* Fill identity from the indenter and copy the pressure list; rows empty. */
@@ -75,6 +79,16 @@ int rc_checkpoint_write(const rc_checkpoint *c, const double *u,
 /* Read a checkpoint; *u receives its displacement grid (caller frees). */
 int rc_checkpoint_read(rc_checkpoint *c, rc_grid **u, const char *path,
     rc_err *err);
+
+/* One run per checkpoint: an exclusive flock(2) on ".NAME.lock" beside
+ * path, held until rc_checkpoint_unlock (or the process ends; a lock file
+ * left by a killed run is harmless and taken over).  Returns the lock's
+ * descriptor, -2 when path names an existing device or FIFO (nothing to
+ * lock), or -1 with err set when another process holds it.  *lock_path
+ * receives the lock file's name (malloc'ed) for the unlock. */
+int rc_checkpoint_lock(const char *path, char **lock_path, rc_err *err);
+/* Remove the lock file, then release the lock; fd < 0 does nothing. */
+void rc_checkpoint_unlock(int fd, char *lock_path);
 
 /* 0 if saved belongs to the same indenter and options as now (pressure
  * list, method, tol, E, alpha, fd, max_iter), else -1 naming the first

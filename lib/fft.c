@@ -101,13 +101,19 @@ int
 rc_fft_wisdom_import(const char *path, rc_err *err)
 {
 	FILE *fp;
-	int ok;
+	int ok, c;
 
 	if ((fp = fopen(path, "r")) == NULL) {
 		if (errno == ENOENT)
 			return 0;
 		return rc_seterr(err, "%s", strerror(errno));
 	}
+	/* Empty (a new file, /dev/null): no wisdom yet, like a missing one. */
+	if ((c = getc(fp)) == EOF) {
+		fclose(fp);
+		return 0;
+	}
+	ungetc(c, fp);
 	ok = fftw_import_wisdom_from_file(fp);
 	fclose(fp);
 	if (!ok)

@@ -62,8 +62,8 @@ int rc_fft_set_threads(int n);
 /* FFTW's wisdom (plans it has measured) is FFTW's own process-wide state,
  * not this library's: loading it makes later MEASURE plans of the same
  * sizes and thread counts instant.  Import: 1 if loaded, 0 if path does
- * not exist (nothing to load yet), -1 if it cannot be read or is not FFTW
- * wisdom.  Export writes all wisdom atomically (temporary file + rename),
+ * not exist or is empty (nothing to load yet), -1 if it cannot be read or
+ * is not FFTW wisdom.  Export writes all wisdom atomically (temporary file + rename),
  * so concurrent runs sharing one file never see a torn one. */
 int rc_fft_wisdom_import(const char *path, rc_err *err);
 int rc_fft_wisdom_export(const char *path, rc_err *err);

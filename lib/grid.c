@@ -169,8 +169,16 @@ rc_grid_meta_set(rc_grid *g, const char *key, const char *val, rc_err *err)
 
 	if (!valid_key(key))
 		return rc_seterr(err, "metadata key '%s': only letters, digits, '_', '-', '.'", key);
-	if (strchr(val, '\n') != NULL)
-		return rc_seterr(err, "metadata value for '%s' contains a newline", key);
+	/* One header line of surf(5), which refuses control characters other
+	 * than tab: refused here, so that no grid is written unreadable. */
+	for (const char *p = val; *p; p++)
+		if (((unsigned char)*p < 0x20 && *p != '\t') || *p == 0x7f) {
+			if (*p == '\n')
+				return rc_seterr(err, "metadata value for '%s' contains "
+				    "a newline", key);
+			return rc_seterr(err, "metadata value for '%s' contains the "
+			    "control character \\x%02x", key, (unsigned char)*p);
+		}
 	if ((v = strdup(val)) == NULL)
 		return rc_seterr(err, "out of memory");
 	for (size_t i = 0; i < g->nmeta; i++)
@@ -264,17 +272,25 @@ int
 rc_grid_history_add(rc_grid *g, const char *line, rc_err *err)
 {
 	char **h = realloc(g->history, (g->nhistory + 1) * sizeof(*h));
-	char *s;
+	char *s, *w;
 
 	if (h == NULL)
 		return rc_seterr(err, "out of memory");
 	g->history = h;
-	if ((s = strdup(line)) == NULL)
+	/* A history line is one header line of surf(5), which refuses control
+	 * characters other than tab: each becomes the four characters \xNN
+	 * (a command line may hold any byte, say in a file name). */
+	if ((s = malloc(4 * strlen(line) + 1)) == NULL)
 		return rc_seterr(err, "out of memory");
-	/* A history line is one header line: fold newlines. */
-	for (char *p = s; *p; p++)
-		if (*p == '\n' || *p == '\r')
-			*p = ' ';
+	for (w = s; *line; line++) {
+		unsigned char c = (unsigned char)*line;
+
+		if ((c < 0x20 && c != '\t') || c == 0x7f)
+			w += sprintf(w, "\\x%02x", c);
+		else
+			*w++ = (char)c;
+	}
+	*w = '\0';
 	h[g->nhistory++] = s;
 	return 0;
 }

@@ -76,7 +76,9 @@ int rc_grid_check_shape(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 
 static inline size_t rc_grid_size(const rc_grid *g) { return g->nx * g->ny; }
 
-/* Metadata: set replaces an existing key.  Keys are [A-Za-z0-9_.-]+. */
+/* Metadata: set replaces an existing key.  Keys are [A-Za-z0-9_.-]+;
+ * a value with a control character other than tab is refused (a header
+ * line of surf(5) may not hold one).  Any other byte is kept. */
 int rc_grid_meta_set(rc_grid *g, const char *key, const char *val, rc_err *err);
 int rc_grid_meta_setf(rc_grid *g, const char *key, rc_err *err,
     const char *fmt, ...) __attribute__((format(printf, 4, 5)));
@@ -89,6 +91,9 @@ void rc_grid_meta_unset(rc_grid *g, const char *key);
 int rc_grid_meta_getd(const rc_grid *g, const char *key, double *v);
 int rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err);
 
+/* Append a command line; a control character other than tab is stored as
+ * the four characters \xNN, so that any command line can be recorded and
+ * read back. */
 int rc_grid_history_add(rc_grid *g, const char *line, rc_err *err);
 
 const char *rc_kind_name(enum rc_kind k);

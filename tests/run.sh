@@ -1,18 +1,19 @@
 #!/bin/sh
 # run.sh - run every C test binary and every end-to-end script, add up
-# their "N passed, N failed" lines and end with the total.
+# their "N passed, N failed[, N skipped]" lines and end with the total
+# (", N skipped" only when a test could not run here; SKIP lines say why).
 #   tests/run.sh BINDIR TESTBINDIR
 RC_BIN=$(cd "$1" && pwd); export RC_BIN
 tbin=$2
 top=$(cd "$(dirname "$0")/.." && pwd); export RC_TOP="$top"
-passed=0 failed=0 broken=""
+passed=0 failed=0 skipped=0 broken=""
 log=$(mktemp)
 
 run_one() {
 	name=$1; shift
 	"$@" >"$log" 2>&1
 	status=$?
-	line=$(grep -E '^[0-9]+ passed, [0-9]+ failed$' "$log" | tail -n 1)
+	line=$(grep -E '^[0-9]+ passed, [0-9]+ failed(, [0-9]+ skipped)?$' "$log" | tail -n 1)
 	if [ -z "$line" ]; then
 		broken="$broken $name"
 		failed=$((failed + 1))
@@ -20,6 +21,11 @@ run_one() {
 		return
 	fi
 	p=${line%% passed*}; f=${line#*, }; f=${f%% failed*}
+	case $line in
+	*skipped) s=${line##*failed, }; s=${s%% skipped}
+		grep -E '^SKIP' "$log"
+		skipped=$((skipped + s)) ;;
+	esac
 	if [ "$f" -ne 0 ] || [ "$status" -ne 0 ]; then
 		grep -E '^(FAIL|BROKEN)' "$log"
 		[ "$f" -eq 0 ] && f=1
@@ -52,5 +58,9 @@ if command -v mandoc >/dev/null 2>&1; then
 	done
 fi
 rm -f "$log"
-echo "$passed passed, $failed failed"
+if [ "$skipped" -gt 0 ]; then
+	echo "$passed passed, $failed failed, $skipped skipped"
+else
+	echo "$passed passed, $failed failed"
+fi
 [ "$failed" -eq 0 ]

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int npassed, nfailed;
+static int npassed, nfailed, nskipped;
 static char tmpdir[256];
 
 static void
@@ -111,6 +111,20 @@ test_tmpdir(void)
 	return tmpdir;
 }
 
+void
+test_skip(int n, const char *fmt, ...)
+{
+	va_list ap;
+
+	nskipped += n;
+	printf("SKIP: %d check(s): ", n);
+	va_start(ap, fmt);
+	vprintf(fmt, ap);
+	va_end(ap);
+	putchar('\n');
+	fflush(stdout);
+}
+
 int
 test_summary(void)
 {
@@ -120,6 +134,10 @@ test_summary(void)
 		if (system(cmd) != 0)
 			fprintf(stderr, "could not remove %s\n", tmpdir);
 	}
-	printf("%d passed, %d failed\n", npassed, nfailed);
+	if (nskipped)
+		printf("%d passed, %d failed, %d skipped\n", npassed, nfailed,
+		    nskipped);
+	else
+		printf("%d passed, %d failed\n", npassed, nfailed);
 	return nfailed ? 1 : 0;
 }

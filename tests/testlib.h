@@ -2,7 +2,9 @@
  *
  * Each check prints nothing when it passes (unless TEST_VERBOSE is set)
  * and "FAIL: description: observed ..., expected ..." when it fails.
- * test_summary() prints "N passed, N failed" and returns the exit status.
+ * test_summary() prints "N passed, N failed" (", N skipped" added when
+ * test_skip counted checks that cannot run here) and returns the exit
+ * status.
  */
 #ifndef RC_TESTLIB_H
 #define RC_TESTLIB_H
@@ -21,6 +23,9 @@ void test_true(int cond, const char *fmt, ...)
 /* Integer equality. */
 void test_int(long long obs, long long exp, const char *fmt, ...)
 	__attribute__((format(printf, 3, 4)));
+/* n checks that cannot run here: "SKIP: n check(s): reason". */
+void test_skip(int n, const char *fmt, ...)
+	__attribute__((format(printf, 2, 3)));
 int test_summary(void);
 
 /* A temporary directory for the test's files, removed by test_summary. */

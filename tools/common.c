@@ -2,7 +2,9 @@
 #include "common.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,11 +17,55 @@
 #include "gridcheck.h"
 #include "units.h"
 
+/* The program name for tool_on_signal, which may only write(2). */
+static const char *signal_name = "";
+
+static void
+say(const char *s)
+{
+	ssize_t r = write(STDERR_FILENO, s, strlen(s));
+	(void)r;
+}
+
+void
+tool_on_signal(int sig)
+{
+	int saved = errno, n = rc_atomic_unlink_pending();
+
+	say(signal_name);
+	say(sig == SIGINT ? ": interrupted (SIGINT)" : sig == SIGTERM ?
+	    ": terminated (SIGTERM)" : sig == SIGHUP ? ": hangup (SIGHUP)" :
+	    ": killed by a signal");
+	say(n > 0 ? "; unfinished output files removed\n" : "\n");
+	errno = saved;
+	signal(sig, SIG_DFL);
+	raise(sig);
+}
+
 void
 tool_init(struct tool *t, const char *name, int argc, char **argv)
 {
+	static const int sigs[] = { SIGINT, SIGTERM, SIGHUP };
 	size_t len = 1;
 
+	/* A closed standard descriptor would be taken by the next file opened
+	 * (an output), and messages to stderr would land in it: hold each
+	 * with /dev/null, read-only for stdin and stdout, so that a table to
+	 * a closed stdout still fails (EBADF) instead of vanishing. */
+	for (int fd = 0; fd <= 2; fd++)
+		if (fcntl(fd, F_GETFD) < 0 && errno == EBADF &&
+		    open("/dev/null", fd == 2 ? O_WRONLY : O_RDONLY) != fd)
+			exit(125);
+	signal_name = name;
+	for (size_t k = 0; k < sizeof(sigs) / sizeof(sigs[0]); k++) {
+		struct sigaction sa, old;
+
+		memset(&sa, 0, sizeof(sa));
+		sa.sa_handler = tool_on_signal;
+		sigemptyset(&sa.sa_mask);
+		if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+			sigaction(sigs[k], &sa, NULL);
+	}
 	memset(t, 0, sizeof(*t));
 	t->name = name;
 	t->lx = t->ly = 1.0;
@@ -82,9 +128,154 @@ tool_bad(struct tool *t, const char *fmt, ...)
 	t->nbad++;
 }
 
-void
-tool_usage_check(const struct tool *t)
+/* What identifies a file: device and inode of an existing one, else of
+ * its directory plus its name.  0 if it cannot clash (standard input that
+ * is not a regular file, a device, a FIFO, a missing directory). */
+struct file_id {
+	dev_t dev;
+	ino_t ino;
+	const char *base;	/* NULL for an existing file */
+};
+
+static int
+file_id(const char *path, struct file_id *id)
 {
+	struct stat st;
+	const char *slash;
+
+	id->base = NULL;
+	if (path == NULL) {
+		if (fstat(STDIN_FILENO, &st) != 0 || !S_ISREG(st.st_mode))
+			return 0;
+	} else if (stat(path, &st) == 0) {
+		if (!S_ISREG(st.st_mode))
+			return 0;
+	} else {
+		char *dir;
+		int ok;
+
+		if ((slash = strrchr(path, '/')) == NULL) {
+			ok = stat(".", &st) == 0;
+			id->base = path;
+		} else {
+			if ((dir = strdup(path)) == NULL)
+				return 0;
+			dir[slash - path + (slash == path)] = '\0';
+			ok = stat(dir, &st) == 0;
+			free(dir);
+			id->base = slash + 1;
+		}
+		if (!ok || *id->base == '\0')
+			return 0;
+	}
+	id->dev = st.st_dev;
+	id->ino = st.st_ino;
+	return 1;
+}
+
+static int
+same_file(const struct file_id *a, const struct file_id *b)
+{
+	if (a->dev != b->dev || a->ino != b->ino || (a->base == NULL) !=
+	    (b->base == NULL))
+		return 0;
+	return a->base == NULL || strcmp(a->base, b->base) == 0;
+}
+
+static int
+may_replace(const struct tool *t, const char *out_opt, const char *in_opt)
+{
+	for (size_t k = 0; k < t->nmay_replace; k++)
+		if (strcmp(t->may_replace[k][0], out_opt) == 0 &&
+		    strcmp(t->may_replace[k][1], in_opt) == 0)
+			return 1;
+	return 0;
+}
+
+
+/* Every output against every other declared file. */
+static void
+check_files(struct tool *t)
+{
+	struct file_id *ids = calloc(t->nfiles ? t->nfiles : 1, sizeof(*ids));
+	int *ok = calloc(t->nfiles ? t->nfiles : 1, sizeof(*ok));
+
+	if (ids == NULL || ok == NULL)
+		tool_fail(t, "out of memory");
+	for (size_t i = 0; i < t->nfiles; i++)
+		ok[i] = file_id(t->files[i].path, &ids[i]);
+	for (size_t i = 0; i < t->nfiles; i++) {
+		const struct tool_file *a = &t->files[i];
+
+		if (!a->output || !ok[i])
+			continue;
+		for (size_t j = 0; j < t->nfiles; j++) {
+			const struct tool_file *b = &t->files[j];
+
+			if (j == i || !ok[j] || (b->output && j < i) ||
+			    !same_file(&ids[i], &ids[j]))
+				continue;
+			if (b->output)
+				tool_bad(t, "%s %s and %s %s: the same file; one output "
+				    "would be lost", b->opt, b->path, a->opt, a->path);
+			else if (!may_replace(t, a->opt, b->opt))
+				tool_bad(t, "%s %s: the same file as %s%s%s; refusing to "
+				    "replace an input", a->opt, a->path, b->path ? b->opt :
+				    "standard input", b->path ? " " : "", b->path ?
+				    b->path : "");
+		}
+	}
+	free(ids);
+	free(ok);
+	free(t->files);
+	t->files = NULL;
+	t->nfiles = 0;
+	free(t->may_replace);
+	t->may_replace = NULL;
+	t->nmay_replace = 0;
+}
+
+static void
+add_file(struct tool *t, const char *opt, const char *path, int output)
+{
+	struct tool_file *f = realloc(t->files, (t->nfiles + 1) * sizeof(*f));
+
+	if (f == NULL)
+		tool_fail(t, "out of memory");
+	t->files = f;
+	f[t->nfiles].opt = opt;
+	f[t->nfiles].path = path;
+	f[t->nfiles].output = output;
+	t->nfiles++;
+}
+
+void
+tool_input(struct tool *t, const char *opt, const char *path)
+{
+	add_file(t, opt, rc_is_stdio(path) ? NULL : path, 0);
+}
+
+void
+tool_may_replace(struct tool *t, const char *out_opt, const char *in_opt)
+{
+	const char *(*p)[2] = realloc(t->may_replace,
+	    (t->nmay_replace + 1) * sizeof(*p));
+
+	if (p == NULL)
+		tool_fail(t, "out of memory");
+	t->may_replace = p;
+	p[t->nmay_replace][0] = out_opt;
+	p[t->nmay_replace][1] = in_opt;
+	t->nmay_replace++;
+}
+
+void
+tool_usage_check(struct tool *t)
+{
+	/* --wisdom is read and rewritten: an output like any other. */
+	if (t->wisdom != NULL)
+		add_file(t, "--wisdom", t->wisdom, 1);
+	check_files(t);
 	if (t->nbad == 0)
 		return;
 	fprintf(stderr, "%s: %d usage problem%s; see '%s --help'\n", t->name,
@@ -385,8 +576,17 @@ tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path)
 void
 tool_output(struct tool *t, const char *opt, const char *path, int binary)
 {
-	if (path == NULL || !rc_is_stdio(path))
+	rc_err err;
+
+	if (path == NULL)
 		return;
+	if (!rc_is_stdio(path)) {
+		if (rc_atomic_check(path, &err) != 0)
+			tool_bad(t, "%s: %s", opt, err.msg);
+		else
+			add_file(t, opt, path, 1);
+		return;
+	}
 	if (++t->nstdout == 2)
 		tool_bad(t, "%s -: only one output may go to standard output", opt);
 	else if (binary && isatty(STDOUT_FILENO))
@@ -430,19 +630,6 @@ tool_exit(const struct tool *t, int status)
 	}
 	free(t->cmdline);
 	return status;
-}
-
-void
-tool_not_input(struct tool *t, const char *opt, const char *out, const char *in)
-{
-	struct stat so, si;
-
-	if (out == NULL || in == NULL || rc_is_stdio(out) || rc_is_stdio(in))
-		return;
-	if (stat(out, &so) == 0 && stat(in, &si) == 0 && so.st_dev == si.st_dev &&
-	    so.st_ino == si.st_ino)
-		tool_bad(t, "%s %s: that is the input %s; refusing to replace it "
-		    "with output of another kind", opt, out, in);
 }
 
 /* The terminal's width: TIOCGWINSZ, else $COLUMNS, else 0 (the default). */

@@ -56,6 +56,18 @@ struct tool {
 	int periodic;		/* --periodic, --no-periodic (enum rc_periodic_opt) */
 	int npy_xy;		/* --npy-order xy */
 	int accept_missing;	/* the tool can use grids with missing points */
+	struct tool_file *files;	/* inputs and outputs (tool_input, tool_output) */
+	size_t nfiles;
+	const char *(*may_replace)[2];	/* (output, input) option pairs */
+	size_t nmay_replace;
+};
+
+/* A file of the run, declared so that tool_usage_check can find two that
+ * are the same file. */
+struct tool_file {
+	const char *opt;	/* the option that names it, for messages */
+	const char *path;	/* NULL for standard input */
+	int output;
 };
 
 /* The FFT options of the tools that plan transforms; put them in the
@@ -73,7 +85,13 @@ struct tool {
 	{ "no-periodic", no_argument, NULL, OPT_NO_PERIODIC }, \
 	{ "npy-order", required_argument, NULL, OPT_NPY_ORDER }
 
+/* Also installs tool_on_signal for SIGINT, SIGTERM and SIGHUP (unless
+ * the signal is ignored, as under nohup). */
 void tool_init(struct tool *t, const char *name, int argc, char **argv);
+/* The handler: removes the temporary files of unfinished outputs
+ * (rc_atomic_unlink_pending), says so on stderr and dies of the signal.
+ * A tool with its own handler calls it for the signal it cannot handle. */
+void tool_on_signal(int sig);
 
 /* Messages: "tool: what: why" on stderr.  tool_fail exits 1. */
 void tool_warn(const struct tool *t, const char *fmt, ...)
@@ -83,8 +101,9 @@ void tool_fail(const struct tool *t, const char *fmt, ...)
 /* Report a usage problem; parsing goes on so all are reported at once. */
 void tool_bad(struct tool *t, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
-/* After validation: if any problem was reported, hint at --help, exit 2. */
-void tool_usage_check(const struct tool *t);
+/* After validation: check the declared files against each other (below);
+ * if any problem was reported, hint at --help, exit 2. */
+void tool_usage_check(struct tool *t);
 
 /* The shared options: -o -j -q -L --json --png --version.  Returns 1 if
  * opt was one of them (handled), 0 otherwise. */
@@ -137,8 +156,20 @@ void tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path);
 void tool_write_grid(const struct tool *t, rc_grid *g, const char *path);
 /* Declare an output (path NULL: not requested; "-": standard output).  A
  * second output bound for standard output is a usage problem, and so is
- * binary data (binary != 0) bound for a terminal. */
+ * binary data (binary != 0) bound for a terminal, an empty name, and a
+ * file that could not be written now (rc_atomic_check: a directory, a
+ * missing or read-only directory), so that no work is lost at the end. */
 void tool_output(struct tool *t, const char *opt, const char *path, int binary);
+/* Declare an input (path NULL or "-": standard input, whatever file it was
+ * redirected from); opt names it in messages ("the input", "--mask").  tool_usage_check refuses an output that is the same
+ * file (device and inode; for files that do not exist yet, directory and
+ * name) as another output or as an input, unless tool_may_replace allowed
+ * that pair.  Only regular and new files count: two outputs to /dev/null
+ * are fine. */
+void tool_input(struct tool *t, const char *opt, const char *path);
+/* Output out_opt may be the input in_opt: a result of the same kind that
+ * replaces it atomically after it was read in full (surfwarp -o IN IN). */
+void tool_may_replace(struct tool *t, const char *out_opt, const char *in_opt);
 /* Check an output path's extension up front (tool_bad if unknown). */
 void tool_check_grid_path(struct tool *t, const char *opt, const char *path);
 
@@ -149,12 +180,5 @@ void tool_table_begin(const struct tool *t, rc_table_out *tab, FILE *fp);
 
 /* Flush stdout and turn a write error into exit status 1. */
 int tool_exit(const struct tool *t, int status);
-/* tool_bad if the output path names the same file as the input path (an
- * existing file, by device and inode): for outputs of another kind than
- * the input, where writing would replace what the user had (a table over
- * the surface it describes).  Either may be NULL or "-". */
-void tool_not_input(struct tool *t, const char *opt, const char *out,
-    const char *in);
-
 
 #endif

@@ -159,7 +159,7 @@ parse(int argc, char **argv, struct opts *o)
 		{ NULL, 0, NULL, 0 }
 	};
 	rc_cstats_opts *cs = &o->cs;
-	int c, n_stdout;
+	int c;
 
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((c = getopt_long(argc, argv, optstring, longopts, NULL)) != -1) {
@@ -246,6 +246,7 @@ parse(int argc, char **argv, struct opts *o)
 	}
 
 	/* validated together */
+	tool_output(&t, "-o", t.out ? t.out : "-", 0);
 	if (o->schedule) {
 		if (!o->have_eps_ref || !o->have_p_ref || !o->have_p)
 			tool_bad(&t, "--schedule needs --eps-ref, --p-ref and -p");
@@ -265,21 +266,16 @@ parse(int argc, char **argv, struct opts *o)
 		    "does not apply");
 	if (cs->have_group_by && cs->nignore)
 		tool_bad(&t, "--group-by and --ignore exclude each other");
-	n_stdout = rc_is_stdio(t.out) + (o->gnuplot && rc_is_stdio(o->gnuplot)) +
-	    (t.png && rc_is_stdio(t.png));
-	if (n_stdout > 1)
-		tool_bad(&t, "only one output may go to standard output (the table "
-		    "unless -o, --gnuplot -, --png -)");
-	if (t.png && rc_is_stdio(t.png) && isatty(STDOUT_FILENO))
-		tool_bad(&t, "--png -: standard output is a terminal");
+	/* At most one output on standard output; the result rows replace no
+	 * input rows (they are another table). */
+	tool_output(&t, "--gnuplot", o->gnuplot, 0);
+	tool_output(&t, "--png", t.png, 1);
 	if (has_control(t.png) || has_control(o->gnuplot))
 		tool_bad(&t, "--png, --gnuplot: a control character in the file name");
-	/* The result rows replace no input rows (they are another table). */
-	for (int i = optind; i < argc; i++) {
-		tool_not_input(&t, "-o", t.out, argv[i]);
-		tool_not_input(&t, "--gnuplot", o->gnuplot, argv[i]);
-		tool_not_input(&t, "--png", t.png, argv[i]);
-	}
+	for (int i = optind; i < argc; i++)
+		tool_input(&t, "the input", argv[i]);
+	if (optind == argc)
+		tool_input(&t, "the input", NULL);
 }
 
 static void

@@ -2,6 +2,7 @@
  * indenter, one result row per pressure (see gfmd-solve(1)). */
 #include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -32,9 +33,13 @@ static volatile sig_atomic_t stop_flag;
  * checkpoint is written and the same pressure goes on. */
 static volatile sig_atomic_t checkpoint_due;
 
+/* The first SIGINT/SIGTERM stops the solve (rows kept, checkpoint
+ * written); a second one ends the process at once, removing temporaries. */
 static void
 on_signal(int sig)
 {
+	if (stop_signal)
+		tool_on_signal(sig);
 	stop_signal = sig;
 	stop_flag = 1;
 }
@@ -45,6 +50,19 @@ on_alarm(int sig)
 	(void)sig;
 	checkpoint_due = 1;
 	stop_flag = 1;
+}
+
+/* The --checkpoint lock, released (and its file removed) at exit, also
+ * through tool_fail. */
+static int lock_fd = -1;
+static char *lock_path;
+
+static void
+unlock_at_exit(void)
+{
+	rc_checkpoint_unlock(lock_fd, lock_path);
+	lock_fd = -1;
+	lock_path = NULL;
 }
 
 static void
@@ -167,7 +185,8 @@ usage(void)
 "  --checkpoint FILE    on SIGINT/SIGTERM, after each finished pressure and\n"
 "                       every --checkpoint-every minutes, save the state to\n"
 "                       FILE (.surf); removed when the run completes\n"
-"  --checkpoint-every MIN  also save it every MIN minutes during a solve\n"
+"  --checkpoint-every MIN  also save it every MIN minutes (at least 0.005)\n"
+"                       during a solve\n"
 "  --resume FILE        continue the run saved in FILE (same indenter; the\n"
 "                       pressures and solver options default to FILE's)\n"
 "  -o FILE              result table (default standard output)\n"
@@ -253,6 +272,11 @@ main(int argc, char **argv)
 	gfmd_opts_check(&t, &o, argc, argv);
 	tool_usage_check(&t);
 	input = optind < argc ? argv[optind] : NULL;
+	if (o.ck_path != NULL) {
+		if ((lock_fd = rc_checkpoint_lock(o.ck_path, &lock_path, &err)) == -1)
+			tool_fail(&t, "--checkpoint %s: %s", o.ck_path, err.msg);
+		atexit(unlock_at_exit);
+	}
 	npressures = o.napproach ? o.napproach : o.nreduced ? o.nreduced :
 	    o.nabsolute;
 
@@ -369,7 +393,6 @@ main(int argc, char **argv)
 
 	memset(&sa, 0, sizeof(sa));
 	sa.sa_handler = on_signal;
-	sa.sa_flags = SA_RESETHAND;	/* a second signal ends the process */
 	sigemptyset(&sa.sa_mask);
 	sigaction(SIGINT, &sa, NULL);
 	sigaction(SIGTERM, &sa, NULL);
@@ -445,7 +468,10 @@ main(int argc, char **argv)
 					tool_fail(&t, "approach %g: %s", o.approach[k], err.msg);
 				tool_fail(&t, "p = %g: %s", p, err.msg);
 			}
-			iterations += res.iterations;
+			/* Saturating: a resumed count (up to LONG_MAX from the
+			 * checkpoint) plus this piece must not overflow. */
+			iterations = res.iterations > LONG_MAX - iterations ?
+			    LONG_MAX : iterations + res.iterations;
 			seconds += res.seconds;
 			if (r == 0 || !stop_flag)
 				break;
@@ -456,10 +482,18 @@ main(int argc, char **argv)
 				if (rc_checkpoint_write(&ck, rc_solver_displacement(solver),
 				    o.ck_path, &err) != 0) {
 					if (stop_signal) {
-						rc_atomic_abort(&out);
-						tool_fail(&t, "interrupted by signal %d; the "
-						    "checkpoint %s could not be written: %s",
-						    (int)stop_signal, o.ck_path, err.msg);
+						rc_err werr;
+
+						/* The finished rows are kept all the same. */
+						if (k == 0 || rc_table_end(&table, &werr) != 0 ||
+						    rc_atomic_commit(&out, &werr) != 0)
+							rc_atomic_abort(&out);
+						tool_fail(&t, "interrupted by signal %d while "
+						    "solving p = %g; the checkpoint %s could not be "
+						    "written: %s; the rows of the %zu of %zu "
+						    "pressures done before it are written",
+						    (int)stop_signal, p, o.ck_path, err.msg, k,
+						    npressures);
 					}
 					tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
 					    err.msg);
@@ -542,12 +576,15 @@ main(int argc, char **argv)
 			    rc_checkpoint_write(&ck, rc_solver_displacement(solver),
 			    o.ck_path, &err) != 0) {
 				if (stop_signal) {
-					if (rc_table_end(&table, &err) != 0 ||
-					    rc_atomic_commit(&out, &err) != 0)
+					rc_err werr;
+
+					if (rc_table_end(&table, &werr) != 0 ||
+					    rc_atomic_commit(&out, &werr) != 0)
 						rc_atomic_abort(&out);
 					tool_fail(&t, "interrupted by signal %d after pressure "
 					    "%zu of %zu; the checkpoint %s could not be written: "
-					    "%s", (int)stop_signal, k + 1, npressures, o.ck_path,
+					    "%s; the rows of the pressures done are written",
+					    (int)stop_signal, k + 1, npressures, o.ck_path,
 					    err.msg);
 				}
 				tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
@@ -574,8 +611,11 @@ main(int argc, char **argv)
 		setitimer(ITIMER_REAL, &off, NULL);
 	}
 	rc_row_free(&row);
-	sigaction(SIGINT, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
-	sigaction(SIGTERM, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
+	/* From here a signal ends the process, removing the temporary files
+	 * of the fields being written. */
+	sa.sa_handler = tool_on_signal;
+	sigaction(SIGINT, &sa, NULL);
+	sigaction(SIGTERM, &sa, NULL);
 	if (rc_table_end(&table, &err) != 0 || rc_atomic_commit(&out, &err) != 0) {
 		rc_atomic_abort(&out);
 		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
@@ -646,8 +686,8 @@ main(int argc, char **argv)
 		status = 1;
 	}
 	/* The run is complete: its checkpoint would only resume it again. */
-	if (o.ck_path != NULL && unlink(o.ck_path) != 0 && errno != ENOENT)
-		tool_warn(&t, "%s: %s", o.ck_path, strerror(errno));
+	if (o.ck_path != NULL && rc_atomic_remove(o.ck_path, &err) != 0)
+		tool_warn(&t, "%s", err.msg);
 	if (o.ck_path != NULL || o.resume_path != NULL)
 		rc_checkpoint_free(&ck);
 	if (o.resume_path != NULL)

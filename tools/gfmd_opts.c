@@ -119,10 +119,12 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->ck_path = arg;
 		break;
 	case OPT_CHECKPOINT_EVERY:
+		/* Each save restarts the solve: below a few tenths of a second
+		 * it would save more than it solves. */
 		if (tool_double(t, "--checkpoint-every", arg, &o->ck_every) == 0 &&
-		    !(o->ck_every > 0 && o->ck_every <= 1e6))
-			tool_bad(t, "--checkpoint-every %s: want minutes in (0, 1e6]",
-			    arg);
+		    !(o->ck_every >= GFMD_CHECKPOINT_EVERY_MIN && o->ck_every <= 1e6))
+			tool_bad(t, "--checkpoint-every %s: want minutes in [%g, 1e6]",
+			    arg, GFMD_CHECKPOINT_EVERY_MIN);
 		break;
 	case OPT_RESUME:
 		o->resume_path = arg;
@@ -175,18 +177,24 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	}
 	if (t->png != NULL && rc_is_stdio(t->png))
 		tool_bad(t, "--png -: give a file name");
-	/* No output replaces the indenter; none but the fields (which may
-	 * update a warm start file) replaces --init. */
-	if (optind < argc) {
-		const char *in = argv[optind];
-
-		tool_not_input(t, "-o", t->out, in);
-		tool_not_input(t, "--png", t->png, in);
-		tool_not_input(t, "--checkpoint", o->ck_path, in);
-		for (int k = 0; k < GFMD_NFIELDS; k++)
-			tool_not_input(t, gfmd_field_option[k], o->field[k], in);
-	}
-	tool_not_input(t, "-o", t->out, o->init);
-	tool_not_input(t, "--png", t->png, o->init);
-	tool_not_input(t, "--checkpoint", o->ck_path, o->init);
+	/* Every output is checked now, not after the solve; no two are the
+	 * same file, none replaces the indenter; only the fields (which may
+	 * update a warm start file) may replace --init, and only the
+	 * checkpoint the one it resumes. */
+	tool_output(t, "-o", t->out ? t->out : "-", 0);
+	if (t->png != NULL && !rc_is_stdio(t->png))
+		tool_output(t, "--png", t->png, 1);
+	if (o->ck_path != NULL && !rc_is_stdio(o->ck_path))
+		tool_output(t, "--checkpoint", o->ck_path, 1);
+	for (int k = 0; k < GFMD_NFIELDS; k++)
+		if (o->field[k] != NULL && !rc_is_stdio(o->field[k])) {
+			tool_output(t, gfmd_field_option[k], o->field[k], 1);
+			tool_may_replace(t, gfmd_field_option[k], "--init");
+		}
+	tool_input(t, "the indenter", optind < argc ? argv[optind] : NULL);
+	if (o->init != NULL)
+		tool_input(t, "--init", o->init);
+	if (o->resume_path != NULL)
+		tool_input(t, "--resume", o->resume_path);
+	tool_may_replace(t, "--checkpoint", "--resume");
 }

@@ -28,6 +28,9 @@ enum {
 	OPT_APPROACH
 };
 
+/* The least --checkpoint-every, in minutes (0.3 s). */
+#define GFMD_CHECKPOINT_EVERY_MIN 0.005
+
 #define GFMD_OPTSTRING "p:E:o:j:qL:h"
 #define GFMD_LONGOPTS \
 	{ "pressure-abs", required_argument, NULL, OPT_PRESSURE_ABS }, \

@@ -142,7 +142,7 @@ main(int argc, char **argv)
 		rc_selfaffine_fit f;
 		size_t nx, ny;
 		double lx, ly;
-		tool_not_input(&t, "-o", t.out, like);
+		tool_input(&t, "--like", like);	/* checked with the outputs below */
 		tool_usage_check(&t);
 		gsl_set_error_handler_off();
 		load_like(&t, like, &f, &nx, &ny, &lx, &ly);

@@ -655,15 +655,9 @@ main(int argc, char **argv)
 	tool_output(&t, "--psd2d", psd2d, 0);
 	tool_output(&t, "--gnuplot", gp, 0);
 	tool_output(&t, "--png", t.png, 1);
-	{
-		const char *outs[] = { t.out, psd2d, gp, t.png };
-		const char *opts[] = { "-o", "--psd2d", "--gnuplot", "--png" };
-
-		for (int k = 0; k < 4; k++) {
-			tool_not_input(&t, opts[k], outs[k], in);
-			tool_not_input(&t, opts[k], outs[k], mask_path);
-		}
-	}
+	tool_input(&t, "the input", in);
+	if (mask_path != NULL)
+		tool_input(&t, "--mask", mask_path);
 	tool_usage_check(&t);
 
 	tool_fft_setup(&t);

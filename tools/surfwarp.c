@@ -315,14 +315,13 @@ main(int argc, char **argv)
 		tool_check_grid_path(&t, "--filled-mask", filled_mask);
 	tool_output(&t, "-o", t.out ? t.out : "-", 0);
 	tool_output(&t, "--filled-mask", filled_mask, 0);
-	tool_not_input(&t, "--filled-mask", filled_mask, in);
-	tool_not_input(&t, "--filled-mask", filled_mask, carve_mask);
 	tool_output(&t, "--png", t.png, 1);
 	/* -o may be the input (written atomically after reading it), not the
 	 * mask; the preview is never either. */
-	tool_not_input(&t, "-o", t.out, carve_mask);
-	tool_not_input(&t, "--png", t.png, in);
-	tool_not_input(&t, "--png", t.png, carve_mask);
+	tool_input(&t, "the input", in);
+	if (carve_mask != NULL)
+		tool_input(&t, "--carve", carve_mask);
+	tool_may_replace(&t, "-o", "the input");
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);

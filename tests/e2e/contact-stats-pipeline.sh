@@ -4,7 +4,7 @@
 cd "$T_TMP" || exit 1
 
 if [ ! -x "$RC_BIN/surfgen" ] || [ ! -x "$RC_BIN/gfmd-solve" ]; then
-	echo "note: surfgen or gfmd-solve not built yet; pipeline test skipped"
+	skip 1 "surfgen or gfmd-solve not built yet: pipeline test not run"
 	summary
 	exit 0
 fi

@@ -346,6 +346,6 @@ if [ "$S" -eq 1 ] && (ulimit -v 250000 && gfmd-solve -j 1 -q -p 0.05 "$T/w0.surf
 		check "out of memory $m: the size asked for is reported ($(head -c 200 "$T/oom.err"))" test $? -eq 0
 	done
 else
-	echo "hard.sh: out-of-memory case skipped (address-space limit unusable here)"
+	skip 4 "out-of-memory case: an address-space limit is unusable here (sanitizer build or S > 1)"
 fi
 summary

@@ -6,11 +6,14 @@ set -u
 PATH="$RC_BIN:$PATH"
 T_PASS=0
 T_FAIL=0
+T_SKIP=0
 T_TMP=$(mktemp -d "${TMPDIR:-/tmp}/rce2e.XXXXXX")
 trap 'rm -rf "$T_TMP"' EXIT
 
 pass() { T_PASS=$((T_PASS + 1)); [ -n "${TEST_VERBOSE:-}" ] && echo "PASS: $1"; return 0; }
 fail() { T_FAIL=$((T_FAIL + 1)); echo "FAIL: $1"; return 0; }
+# skip N REASON: N checks that cannot run here, counted and said why
+skip() { T_SKIP=$((T_SKIP + $1)); echo "SKIP: $1 check(s): $2"; return 0; }
 
 # check DESC CMD...: passes if the command succeeds
 check() { d=$1; shift; if "$@"; then pass "$d"; else fail "$d"; fi; }
@@ -46,4 +49,13 @@ col() {
 		NR == r + 1 { if (c) print $c; else print "missing-column-" n; exit }' "$1"
 }
 
-summary() { echo "$T_PASS passed, $T_FAIL failed"; [ "$T_FAIL" -eq 0 ]; }
+# The last line of every test program: "N passed, N failed", followed by
+# ", N skipped" when some checks could not run here.
+summary() {
+	if [ "$T_SKIP" -gt 0 ]; then
+		echo "$T_PASS passed, $T_FAIL failed, $T_SKIP skipped"
+	else
+		echo "$T_PASS passed, $T_FAIL failed"
+	fi
+	[ "$T_FAIL" -eq 0 ]
+}

@@ -39,6 +39,8 @@ check "gnuplot script has a data block" grep -q 'EOD' c.gp
 if command -v gnuplot >/dev/null 2>&1; then
 	check "gnuplot runs the script" gnuplot c.gp
 	check "gnuplot wrote the PNG" [ -s c.png ]
+else
+	skip 2 "gnuplot not installed: the --gnuplot script is not run"
 fi
 surfstat --acf r.surf > acf.tsv
 check "acf has x, y, radial" [ "$(cut -f1 acf.tsv | sort -u | tr '\n' ' ')" = "direction radial x y " ]
