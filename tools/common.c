@@ -329,7 +329,7 @@ void
 tool_check_grid_path(struct tool *t, const char *opt, const char *path)
 {
 	if (path != NULL && rc_format_from_name(path) < 0)
-		tool_bad(t, "%s %s: unknown extension; use .surf, .npy, .gsf or .txt",
+		tool_bad(t, "%s %s: unknown extension; use .surf, .npy, .gsf, .txt, .x3p or .nc",
 		    opt, path);
 }
 
@@ -340,7 +340,7 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 	int fmt = rc_format_from_name(path);
 
 	if (fmt < 0)
-		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf or .txt", path);
+		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf, .txt, .x3p or .nc", path);
 	if (rc_is_stdio(path) && fmt != RC_FMT_TXT && isatty(STDOUT_FILENO))
 		tool_fail(t, "standard output is a terminal; refusing to write binary "
 		    "data there (use -o FILE or a pipe)");
