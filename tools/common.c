@@ -128,6 +128,15 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 		else
 			t->wisdom = arg;
 		return 1;
+	case OPT_CHANNEL:
+		if (arg[0] == '\0')
+			tool_bad(t, "--channel: want a number or a title");
+		else if (strspn(arg, "0123456789") == strlen(arg) &&
+		    (strlen(arg) > 6 || atoi(arg) < 1))
+			tool_bad(t, "--channel %s: channels count from 1", arg);
+		else
+			t->channel = arg;
+		return 1;
 	case OPT_FFT_EFFORT:
 		if ((n = rc_fft_effort_parse(arg)) < 0 || n == RC_FFT_WISDOM)
 			tool_bad(t, "--fft-effort %s: want estimate, measure or patient",
@@ -292,8 +301,8 @@ tool_double_list(struct tool *t, const char *opt, const char *arg, double **v,
 	}
 }
 
-rc_grid *
-tool_read_grid(const struct tool *t, const char *path)
+static rc_grid *
+read_grid(const struct tool *t, const char *path, const char *channel)
 {
 	rc_read_opts o;
 	rc_err err;
@@ -303,6 +312,10 @@ tool_read_grid(const struct tool *t, const char *path)
 	o.lx = t->lx;
 	o.ly = t->ly;
 	o.have_l = t->have_l;
+	if (channel != NULL && strspn(channel, "0123456789") == strlen(channel))
+		o.channel = atoi(channel);
+	else
+		o.channel_name = channel;
 
 	if (rc_is_stdio(path) && isatty(STDIN_FILENO))
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
@@ -311,6 +324,49 @@ tool_read_grid(const struct tool *t, const char *path)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
 	return g;
+}
+
+rc_grid *
+tool_read_grid(const struct tool *t, const char *path)
+{
+	return read_grid(t, path, NULL);
+}
+
+rc_grid *
+tool_read_input(const struct tool *t, const char *path)
+{
+	return read_grid(t, path, t->channel);
+}
+
+void
+tool_list_channels(const struct tool *t, const char *path)
+{
+	rc_channel_info *c;
+	rc_read_opts o;
+	rc_err err;
+	size_t n;
+
+	rc_read_opts_init(&o);
+	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
+		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		    err.msg);
+	printf("channel\ttitle\tnx\tny\tlx\tly\tunit\tz_unit\tmask\n");
+	for (size_t k = 0; k < n; k++) {
+		char lx[32], ly[32];
+
+		/* Titles are the file's: tabs and newlines would break the table. */
+		for (char *p = c[k].title; *p; p++)
+			if ((unsigned char)*p < 0x20)
+				*p = ' ';
+		rc_format_double(lx, sizeof(lx), c[k].lx);
+		rc_format_double(ly, sizeof(ly), c[k].ly);
+		printf("%zu\t%s\t%zu\t%zu\t%s\t%s\t%s\t%s\t%s\n", k + 1,
+		    c[k].title[0] ? c[k].title : "-", c[k].nx, c[k].ny, lx, ly,
+		    c[k].unit[0] ? c[k].unit : "-",
+		    c[k].z_unit[0] ? c[k].z_unit : "-", c[k].has_mask ? "yes" : "no");
+	}
+	free(c);
+	exit(tool_exit(t, 0));
 }
 
 void

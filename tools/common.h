@@ -24,6 +24,7 @@ enum {
 	OPT_VERSION,
 	OPT_WISDOM,
 	OPT_FFT_EFFORT,
+	OPT_CHANNEL,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -42,7 +43,12 @@ struct tool {
 	const char *wisdom;	/* --wisdom FILE, else $RC_WISDOM, else NULL */
 	int fft_effort;		/* --fft-effort, -1 for the policy */
 	int fft_measured;	/* a plan was asked for with MEASURE or more */
+	const char *channel;	/* --channel N|NAME of the main input, or NULL */
 };
+
+/* --channel N|NAME, for the tools that read a height map. */
+#define TOOL_CHANNEL_LONGOPT \
+	{ "channel", required_argument, NULL, OPT_CHANNEL }
 
 /* The FFT options of the tools that plan transforms; put them in the
  * tool's struct option table. */
@@ -97,6 +103,12 @@ int tool_double_list(struct tool *t, const char *opt, const char *arg,
 
 /* Read a grid (path "-" or NULL: stdin); on failure "tool: path: why", exit 1. */
 rc_grid *tool_read_grid(const struct tool *t, const char *path);
+/* The same for the main input, whose channel --channel chooses. */
+rc_grid *tool_read_input(const struct tool *t, const char *path);
+/* surfstat --channels: one line per channel of the file (tab-separated
+ * index, title, nx, ny, lx, ly, unit, z_unit, mask); exits. */
+void tool_list_channels(const struct tool *t, const char *path)
+	__attribute__((noreturn));
 /* Append the command line to the history and write atomically; the format
  * follows the extension.  Refuses binary output to a terminal.  Exits 1 on
  * failure. */

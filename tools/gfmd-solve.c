@@ -172,6 +172,8 @@ usage(void)
 "  --wisdom FILE        load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 "  -q                   no progress display\n"
 "  -L LX[xLY]           cell size of an input that carries none\n"
+"  --channel N|NAME     channel of a multi-channel input (default: the first\n"
+"                       whose values are lengths)\n"
 "  -h, --help           this help\n"
 "  --version            the version\n");
 }
@@ -201,6 +203,7 @@ main(int argc, char **argv)
 	static const struct option longopts[] = {
 		GFMD_LONGOPTS,
 		TOOL_FFT_LONGOPTS,
+		TOOL_CHANNEL_LONGOPT,
 		{ NULL, 0, NULL, 0 }
 	};
 	struct tool t;
@@ -240,7 +243,7 @@ main(int argc, char **argv)
 	npressures = o.nreduced ? o.nreduced : o.nabsolute;
 
 	tool_fft_setup(&t);
-	h = tool_read_grid(&t, input);
+	h = tool_read_input(&t, input);
 	if (o.resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */

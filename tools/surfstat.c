@@ -26,7 +26,8 @@ enum {
 	OPT_BY_HEIGHT,
 	OPT_FD,
 	OPT_GNUPLOT,
-	OPT_BINS
+	OPT_BINS,
+	OPT_CHANNELS
 };
 
 enum table { T_SCALARS, T_PSD, T_ACF, T_BY_HEIGHT };
@@ -51,6 +52,10 @@ usage(void)
 	    "  --wisdom FILE         load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 	    "  -o FILE               table output (default stdout)   --json  JSON\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
+	    "                        first whose values are lengths)\n"
+	    "  --channels            list the input's channels instead: channel title\n"
+	    "                        nx ny lx ly unit z_unit mask\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -68,6 +73,8 @@ static const struct option longopts[] = {
 	{ "fd", no_argument, NULL, OPT_FD },
 	{ "gnuplot", required_argument, NULL, OPT_GNUPLOT },
 	{ "bins-per-decade", required_argument, NULL, OPT_BINS },
+	TOOL_CHANNEL_LONGOPT,
+	{ "channels", no_argument, NULL, OPT_CHANNELS },
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -315,7 +322,7 @@ main(int argc, char **argv)
 	const char *mask_path = NULL, *psd2d = NULL, *gp = NULL, *in = NULL;
 	enum table table = T_SCALARS;
 	enum rc_deriv_method method = RC_DERIV_SPECTRAL;
-	int ntables = 0, opt;
+	int ntables = 0, opt, list = 0;
 	size_t nbins = 0;
 	double bpd = 10;
 	long v;
@@ -363,6 +370,9 @@ main(int argc, char **argv)
 		case OPT_FD:
 			method = RC_DERIV_FD;
 			break;
+		case OPT_CHANNELS:
+			list = 1;
+			break;
 		case OPT_BINS:
 			if (tool_double(&t, "--bins-per-decade", optarg, &bpd) == 0 &&
 			    !(bpd >= 1 && bpd <= 1000))
@@ -403,9 +413,11 @@ main(int argc, char **argv)
 		}
 	}
 	tool_usage_check(&t);
+	if (list)
+		tool_list_channels(&t, in);
 
 	tool_fft_setup(&t);
-	g = tool_read_grid(&t, in);
+	g = tool_read_input(&t, in);
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)

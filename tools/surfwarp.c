@@ -39,9 +39,12 @@ usage(void)
 	    "                        xi standard normal per point: grid-scale roughness\n"
 	    "  --carve-seed S        seed of xi (default 1)\n"
 	    "  --rms-gradient G      finally scale heights to rms gradient G\n"
-	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
+	    "  -o FILE               output (.surf .npy .gsf .txt .x3p .nc; default\n"
+	    "                        stdout, surf)\n"
 	    "  --png FILE            PNG preview of the result\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
+	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
+	    "                        first whose values are lengths)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -57,6 +60,7 @@ static const struct option longopts[] = {
 	{ "carve-width", required_argument, NULL, OPT_CARVE_WIDTH },
 	{ "carve-rough", required_argument, NULL, OPT_CARVE_ROUGH },
 	{ "carve-seed", required_argument, NULL, OPT_CARVE_SEED },
+	TOOL_CHANNEL_LONGOPT,
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -161,7 +165,7 @@ main(int argc, char **argv)
 	tool_usage_check(&t);
 
 	rc_fft_set_threads(t.threads);
-	g = tool_read_grid(&t, in);
+	g = tool_read_input(&t, in);
 	if (have_w) {
 		double dmin, dmax;
 		rc_warp_default_bounds(g, &dmin, &dmax);
