@@ -73,7 +73,7 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	}
 	if ((st = nc_open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
 	    NC_NOERR)
-		return nc_fail(err, "cannot open", st);
+		return rc_seterr(err, "not a readable netCDF file: %s", nc_strerror(st));
 	if (nc_inq_varid(nc, "heights", &hv) != NC_NOERR) {
 		rc_seterr(err, "netCDF file has no variable 'heights' (the "
 		    "contact.engineering convention)");
