@@ -55,6 +55,118 @@ att_text(int nc, int var, const char *att, char *buf, size_t cap)
 	return 0;
 }
 
+/* The classic header (CDF-1, -2, -5) walked before libnetcdf sees it:
+ * libnetcdf allocates what the header's counts claim, so every count must
+ * be covered by the bytes that follow it (each element takes at least
+ * one, or four, bytes).  A header that passes costs no more memory than
+ * the file's size. */
+struct hcur {
+	const unsigned char *p, *end;
+	int wide;	/* CDF-5: 64-bit counts */
+};
+
+static int
+h_count(struct hcur *c, uint64_t *v)
+{
+	size_t w = c->wide ? 8 : 4;
+
+	if ((size_t)(c->end - c->p) < w)
+		return -1;
+	*v = 0;
+	for (size_t k = 0; k < w; k++)
+		*v = *v << 8 | c->p[k];
+	c->p += w;
+	return 0;
+}
+
+static int
+h_skip(struct hcur *c, uint64_t n, uint64_t unit)
+{
+	uint64_t bytes;
+
+	if (unit != 0 && n > (uint64_t)(c->end - c->p) / unit)
+		return -1;
+	bytes = (n * unit + 3) & ~(uint64_t)3;	/* padded to 4 */
+	if (bytes > (uint64_t)(c->end - c->p))
+		return -1;
+	c->p += bytes;
+	return 0;
+}
+
+static int
+h_u32(struct hcur *c, uint32_t *v)
+{
+	if (c->end - c->p < 4)
+		return -1;
+	*v = (uint32_t)c->p[0] << 24 | (uint32_t)c->p[1] << 16 |
+	    (uint32_t)c->p[2] << 8 | c->p[3];
+	c->p += 4;
+	return 0;
+}
+
+static int
+h_name(struct hcur *c)
+{
+	uint64_t n;
+
+	return h_count(c, &n) != 0 ? -1 : h_skip(c, n, 1);
+}
+
+/* An attribute list (tag already read as 0x0C or ABSENT). */
+static int
+h_atts(struct hcur *c)
+{
+	static const unsigned size[13] = { 0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8 };
+	uint32_t tag, type;
+	uint64_t n, m;
+
+	if (h_u32(c, &tag) != 0 || h_count(c, &n) != 0)
+		return -1;
+	if (tag == 0)
+		return n == 0 ? 0 : -1;
+	if (tag != 0x0C || n > (uint64_t)(c->end - c->p) / 4)
+		return -1;
+	for (uint64_t k = 0; k < n; k++)
+		if (h_name(c) != 0 || h_u32(c, &type) != 0 || type < 1 ||
+		    type > 11 || h_count(c, &m) != 0 || h_skip(c, m, size[type]))
+			return -1;
+	return 0;
+}
+
+static int
+classic_header_ok(const unsigned char *buf, size_t len)
+{
+	struct hcur c = { buf + 4, buf + len, buf[3] == 5 };
+	uint32_t tag, type;
+	uint64_t n, m, v;
+
+	if (h_count(&c, &v) != 0)	/* numrecs */
+		return 0;
+	/* Dimensions. */
+	if (h_u32(&c, &tag) != 0 || h_count(&c, &n) != 0 ||
+	    (tag != 0x0A && !(tag == 0 && n == 0)) ||
+	    n > (uint64_t)(c.end - c.p) / 4)
+		return 0;
+	for (uint64_t k = 0; k < n; k++)
+		if (h_name(&c) != 0 || h_count(&c, &v) != 0)
+			return 0;
+	if (h_atts(&c) != 0)
+		return 0;
+	/* Variables: name, dimension ids, attributes, type, size, begin. */
+	if (h_u32(&c, &tag) != 0 || h_count(&c, &n) != 0 ||
+	    (tag != 0x0B && !(tag == 0 && n == 0)) ||
+	    n > (uint64_t)(c.end - c.p) / 4)
+		return 0;
+	for (uint64_t k = 0; k < n; k++) {
+		if (h_name(&c) != 0 || h_count(&c, &m) != 0 ||
+		    h_skip(&c, m, c.wide ? 8 : 4) != 0 || h_atts(&c) != 0 ||
+		    h_u32(&c, &type) != 0 || h_count(&c, &v) != 0 ||
+		    h_skip(&c, 1, buf[3] == 1 ? 4 : 8) != 0)
+			return 0;
+	}
+	return 1;
+}
+
 int
 rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
@@ -71,6 +183,9 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		lx = o->lx;
 		ly = o->ly;
 	}
+	if (classic && (len < 4 || !classic_header_ok(buf, len)))
+		return rc_seterr(err, "not a readable netCDF file: corrupt or "
+		    "truncated header");
 	if ((st = nc_open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
 	    NC_NOERR)
 		return rc_seterr(err, "not a readable netCDF file: %s", nc_strerror(st));

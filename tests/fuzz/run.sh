@@ -16,7 +16,7 @@ seed_read() {
 	c=$1
 	cp "$top"/tests/data/io_small.* "$top"/tests/data/fuzz/read/* "$c"/ 2>/dev/null
 	[ -x "$bin/surfgen" ] || return 0
-	for ext in surf npy gsf txt; do
+	for ext in surf npy gsf txt x3p nc; do
 		"$bin/surfgen" -q -n 4x3 --seed 7 -o "$c/gen-4x3.$ext" 2>/dev/null
 		"$bin/surfgen" -q -n 1 --type flat -o "$c/gen-1.$ext" 2>/dev/null
 	done
