@@ -56,5 +56,5 @@ for f in $formats; do
 	rs=$(best "$RC_BIN/surfstat" --channels "$file")
 	cs=$(best sh -c "cat '$file' > /dev/null")
 	printf '%s\t%s\t%s\t%s\t%s\n' "$f" "$(wc -c < "$file")" "$rs" "$cs" \
-	    "$(awk -v r="$rs" -v c="$cs" 'BEGIN { printf "%.1f", c > 0 ? r / c : 0 }')"
+	    "$(awk -v r="$rs" -v c="$cs" 'BEGIN { printf "%.1f", (c > 0 ? r / c : 0) }')"
 done
