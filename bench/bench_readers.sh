@@ -3,7 +3,8 @@
 # bytes: each format's reader (surfstat --channels, which reads every
 # channel and computes nothing) on one 2048^2 surface, against
 # `cat FILE > /dev/null`, best of BENCH_REPEAT (default 3) runs each.
-# Prints format, file bytes, reader seconds, cat seconds, their ratio.
+# Prints format, file bytes, wall seconds (reader, cat, ratio) and CPU
+# seconds (reader, cat, ratio).
 # .gwy comes from Gwyddion (skipped without it); "vendor" is an NRRD file,
 # which goes through Gwyddion's converter, so its time is Gwyddion's.
 # Never fails on time.
@@ -15,17 +16,27 @@ REPEAT=${BENCH_REPEAT:-3}
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/rcread.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 
-now() { date +%s.%N; }
-# best CMD...: the shortest wall time of REPEAT runs, seconds
+# best CMD...: "WALL CPU" seconds, each the least of REPEAT runs; CPU is
+# user + system time (GNU time), which a loaded machine disturbs less
+# than the wall time, or "-" without /usr/bin/time.
 best() {
-	b=""
+	bw="" bc=""
 	r=0
 	while [ "$r" -lt "$REPEAT" ]; do
-		t0=$(now); "$@" >/dev/null 2>&1; t1=$(now)
-		b=$(awk -v a="$t0" -v z="$t1" -v b="$b" 'BEGIN { d = z - a; print (b == "" || d < b) ? d : b }')
+		if [ -x /usr/bin/time ]; then
+			/usr/bin/time -f '%e %U %S' -o "$TMP/time" "$@" >/dev/null 2>&1
+			w=$(awk '{ print $1 }' "$TMP/time")
+			c=$(awk '{ print $2 + $3 }' "$TMP/time")
+		else
+			t0=$(date +%s.%N); "$@" >/dev/null 2>&1; t1=$(date +%s.%N)
+			w=$(awk -v a="$t0" -v z="$t1" 'BEGIN { print z - a }')
+			c=-
+		fi
+		bw=$(awk -v d="$w" -v b="$bw" 'BEGIN { print (b == "" || d < b) ? d : b }')
+		bc=$(awk -v d="$c" -v b="$bc" 'BEGIN { print (d == "-" ? "-" : (b == "" || d < b) ? d : b) }')
 		r=$((r + 1))
 	done
-	echo "$b"
+	echo "$bw $bc"
 }
 
 "$RC_BIN/surfgen" -q -n "$N" --seed 1 -o "$TMP/s.surf"
@@ -50,11 +61,14 @@ if command -v gwyddion >/dev/null 2>&1; then
 	    formats="$formats gwy"
 	formats="$formats nrrd"
 fi
-printf 'format\tbytes\tread_s\tcat_s\tratio\n'
+printf 'format\tbytes\tread_wall_s\tcat_wall_s\twall_ratio\tread_cpu_s\tcat_cpu_s\tcpu_ratio\n'
 for f in $formats; do
 	file=$TMP/s.$f
-	rs=$(best "$RC_BIN/surfstat" --channels "$file")
-	cs=$(best sh -c "cat '$file' > /dev/null")
-	printf '%s\t%s\t%s\t%s\t%s\n' "$f" "$(wc -c < "$file")" "$rs" "$cs" \
-	    "$(awk -v r="$rs" -v c="$cs" 'BEGIN { printf "%.1f", (c > 0 ? r / c : 0) }')"
+	set -- $(best "$RC_BIN/surfstat" --channels "$file")
+	rw=$1 rc=$2
+	set -- $(best sh -c "cat '$file' > /dev/null")
+	cw=$1 cc=$2
+	printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$f" "$(wc -c < "$file")" \
+	    "$rw" "$cw" "$(awk -v r="$rw" -v c="$cw" 'BEGIN { printf "%.1f", (c > 0 ? r / c : 0) }')" \
+	    "$rc" "$cc" "$(awk -v r="$rc" -v c="$cc" 'BEGIN { printf "%.1f", (c > 0 ? r / c : 0) }')"
 done
