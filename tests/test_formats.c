@@ -297,7 +297,6 @@ make_gwy(const char *path, uint32_t nclaim_height)
 	for (int k = 0; k < 12; k++)
 		v[k] = 1e-9 * (k + 0.25);
 	m[5] = 1;
-	b_put(&c, "\x00", 0);
 	b_field(&c, "/0/data", 4, 3, 2e-6, "m", "deg", v, 12);
 	b_title(&c, "/0/data/title", "Phase");
 	b_str(&c, "/0/data/visible");
