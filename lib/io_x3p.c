@@ -288,13 +288,9 @@ read_values(zip_t *za, const xmlNode *r3, const struct desc *d, rc_grid *g,
 		for (k = 0; k < n; k++)
 			g->z[k] = raw_value(b + k * el, d->type);
 		if (text_at(dl, "ValidPointsLink", name, sizeof(name)) != NULL) {
-			if (read_entry(za, name, 0, &vb, &len, err) != 0)
+			/* One bit per point, the last byte padded. */
+			if (read_entry(za, name, (n + 7) / 8, &vb, &len, err) != 0)
 				goto fail;
-			if (len < (n + 7) / 8) {
-				rc_seterr(err, "x3p: valid-points file has %zu bytes for "
-				    "%zu points", len, n);
-				goto fail;
-			}
 			if (text_at(dl, "MD5ChecksumValidPoints", sum, sizeof(sum)) !=
 			    NULL && check_md5(vb, len, sum, "valid points", err) != 0)
 				goto fail;
