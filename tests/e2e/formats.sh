@@ -42,6 +42,39 @@ if command -v gwyddion >/dev/null 2>&1; then
 	check "x3p via Gwyddion: lateral unit m" [ "$(chan a.gwy 1 unit)" = m ]
 	check "x3p via Gwyddion: height unit m" [ "$(chan a.gwy 1 z_unit)" = m ]
 
+	# Missing points: an x3p with a validity file (point 4 invalid), as
+	# the standard lays it out; Gwyddion turns it into a mask, which we
+	# read back as missing points.
+	python3 - <<'PY'
+import hashlib, struct, zipfile
+nx, ny = 4, 3
+data = struct.pack("<12d", *[1e-9 * k for k in range(12)])
+valid = bytes([0xEF, 0x0F])
+xml = """<?xml version="1.0" encoding="UTF-8"?>
+<p:ISO5436_2 xmlns:p="http://www.opengps.eu/2008/ISO5436_2">
+<Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType><Axes>
+<CX><AxisType>I</AxisType><DataType>D</DataType><Increment>1e-06</Increment><Offset>0</Offset></CX>
+<CY><AxisType>I</AxisType><DataType>D</DataType><Increment>2e-06</Increment><Offset>0</Offset></CY>
+<CZ><AxisType>A</AxisType><DataType>D</DataType><Increment>1</Increment><Offset>0</Offset></CZ>
+</Axes></Record1>
+<Record3><MatrixDimension><SizeX>4</SizeX><SizeY>3</SizeY><SizeZ>1</SizeZ></MatrixDimension>
+<DataLink><PointDataLink>bindata/data.bin</PointDataLink><MD5ChecksumPointData>%s</MD5ChecksumPointData>
+<ValidPointsLink>bindata/valid.bin</ValidPointsLink><MD5ChecksumValidPoints>%s</MD5ChecksumValidPoints></DataLink></Record3>
+</p:ISO5436_2>
+""" % (hashlib.md5(data).hexdigest(), hashlib.md5(valid).hexdigest())
+with zipfile.ZipFile("m.x3p", "w") as z:
+    z.writestr("main.xml", xml)
+    z.writestr("bindata/data.bin", data)
+    z.writestr("bindata/valid.bin", valid)
+PY
+	check "x3p validity file: a mask" [ "$(chan m.x3p 1 mask)" = yes ]
+	surfwarp -o m.txt m.x3p
+	check "x3p validity bits: least significant first (point 4 = row 1, x 0)" \
+	    [ "$(grep -v '^#' m.txt | awk 'NR == 2 { print $1 }')" = nan ]
+	check "x3p: size from the increments" [ "$(chan m.x3p 1 lx) $(chan m.x3p 1 ly)" = "4e-06 6e-06" ]
+	check "gwyddion converts the masked x3p" gwyddion --convert-to-gwy=m.gwy m.x3p
+	check "masked x3p via Gwyddion: still a mask" [ "$(chan m.gwy 1 mask)" = yes ]
+
 	# Two channels: Gwyddion merges two GSF files into one .gwy.  The
 	# first is a phase map (ZUnits deg); the default is the height.
 	python3 - <<'PY'
