@@ -5,6 +5,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 int
 rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err)
@@ -61,11 +62,32 @@ rc_io_set_unit(char dst[32], const char *u, rc_err *err)
 	return 0;
 }
 
+/* Bytes left in a regular file (what is buffered and what follows), or
+ * 0 if the input is no regular file. */
+static size_t
+file_left(rc_in *in)
+{
+	struct stat st;
+	off_t at;
+	int fd = fileno(in->fp);
+
+	if (fd < 0 || fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) ||
+	    (at = ftello(in->fp)) < 0 || at > st.st_size)
+		return 0;
+	return (size_t)(st.st_size - at) + (in->len - in->pos);
+}
+
 int
 rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err)
 {
-	size_t cap = (size_t)1 << 16, n = 0, r;
-	unsigned char *b = rc_malloc(cap, err), *nb;
+	size_t cap = file_left(in) + 1, n = 0, r;
+	unsigned char *b, *nb;
+
+	/* A regular file is read at once (the extra byte sees the end); a
+	 * pipe's buffer doubles from 64 KiB. */
+	if (cap < ((size_t)1 << 16))
+		cap = (size_t)1 << 16;
+	b = rc_malloc(cap, err);
 
 	if (b == NULL)
 		return -1;
