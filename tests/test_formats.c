@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <zip.h>
+
 #include "io.h"
 #include "md5.h"
 #include "testlib.h"
@@ -438,6 +440,78 @@ test_sdf(void)
 	rc_grid_free(g);
 }
 
+/* An x3p as another writer might make it: int16 heights with a CZ
+ * Increment and Offset (z = v * Increment + Offset), no checksums, or the
+ * values inline as a DataList. */
+static void
+make_x3p(const char *path, const char *type, const char *record3,
+    const void *bin, size_t nbin)
+{
+	char xml[2048];
+	zip_t *z;
+	int e;
+
+	snprintf(xml, sizeof(xml), "<?xml version=\"1.0\"?>\n"
+	    "<p:ISO5436_2 xmlns:p=\"http://www.opengps.eu/2008/ISO5436_2\">"
+	    "<Record1><Revision>ISO5436 - 2000</Revision><FeatureType>SUR</FeatureType>"
+	    "<Axes><CX><AxisType>I</AxisType><DataType>D</DataType>"
+	    "<Increment>0.5e-6</Increment><Offset>0</Offset></CX>"
+	    "<CY><AxisType>I</AxisType><DataType>D</DataType>"
+	    "<Increment>0.25e-6</Increment><Offset>0</Offset></CY>"
+	    "<CZ><AxisType>A</AxisType><DataType>%s</DataType>"
+	    "<Increment>2e-9</Increment><Offset>1e-6</Offset></CZ></Axes></Record1>"
+	    "<Record3><MatrixDimension><SizeX>3</SizeX><SizeY>2</SizeY>"
+	    "<SizeZ>1</SizeZ></MatrixDimension>%s</Record3></p:ISO5436_2>\n",
+	    type, record3);
+	z = zip_open(path, ZIP_CREATE | ZIP_TRUNCATE, &e);
+	zip_file_add(z, "main.xml", zip_source_buffer(z, xml, strlen(xml), 0), 0);
+	if (bin != NULL)
+		zip_file_add(z, "bindata/data.bin", zip_source_buffer(z, bin, nbin,
+		    0), 0);
+	zip_close(z);
+}
+
+static void
+test_x3p_foreign(void)
+{
+	unsigned char bin[12];
+	int16_t v[6] = { -3, 0, 5, 100, -100, 7 };
+	rc_err err;
+	rc_grid *g;
+	int ok = 1;
+
+	for (int k = 0; k < 6; k++) {
+		bin[2 * k] = (unsigned char)((uint16_t)v[k] & 255);
+		bin[2 * k + 1] = (unsigned char)((uint16_t)v[k] >> 8);
+	}
+	make_x3p(tmp("i.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
+	    "</PointDataLink></DataLink>", bin, sizeof(bin));
+	g = rc_grid_read(tmp("i.x3p"), NULL, &err);
+	test_true(g != NULL, "x3p int16: %s", g ? "" : err.msg);
+	if (g != NULL) {
+		for (int k = 0; k < 6; k++)
+			ok &= g->z[k] == v[k] * 2e-9 + 1e-6;
+		test_true(ok, "x3p int16: z = v Increment + Offset");
+		test_rel(g->lx, 1.5e-6, 2.3e-16, "x3p int16: lx = SizeX CX Increment");
+		test_rel(g->ly, 0.5e-6, 2.3e-16, "x3p int16: ly");
+	}
+	rc_grid_free(g);
+	make_x3p(tmp("l.x3p"), "D", "<DataList><Datum>1</Datum><Datum>2</Datum>"
+	    "<Datum></Datum><Datum>4</Datum><Datum>5</Datum><Datum>6</Datum>"
+	    "</DataList>", NULL, 0);
+	g = rc_grid_read(tmp("l.x3p"), NULL, &err);
+	test_true(g != NULL && g->z[5] == 6 * 2e-9 + 1e-6 && g->valid != NULL &&
+	    !g->valid[2] && isnan(g->z[2]), "x3p DataList, an empty Datum missing: %s",
+	    g ? "" : err.msg);
+	rc_grid_free(g);
+	make_x3p(tmp("s.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
+	    "</PointDataLink></DataLink>", bin, sizeof(bin) - 2);
+	g = rc_grid_read(tmp("s.x3p"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "holds 10 bytes") != NULL,
+	    "x3p: short data file refused: %s", err.msg);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -446,5 +520,6 @@ main(void)
 	test_roundtrips();
 	test_gwy();
 	test_sdf();
+	test_x3p_foreign();
 	return test_summary();
 }
