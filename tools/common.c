@@ -347,6 +347,9 @@ tool_list_channels(const struct tool *t, const char *path)
 	size_t n;
 
 	rc_read_opts_init(&o);
+	o.lx = t->lx;
+	o.ly = t->ly;
+	o.have_l = t->have_l;
 	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
