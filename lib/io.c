@@ -3,6 +3,7 @@
 #include "io.h"
 #include "io_internal.h"
 #include "atomic.h"
+#include "units.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -478,7 +479,8 @@ rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
 	return 0;
 }
 
-/* What every grid must satisfy, whatever format it came in. */
+/* What every grid must satisfy, whatever format it came in.  Missing
+ * points (valid 0) are NaN by definition. */
 static int
 check_values(rc_grid *g, const rc_read_opts *o, rc_err *err)
 {
@@ -545,33 +547,200 @@ static const char npy_magic[] = "\x93NUMPY";
 /* Any version: the reader names the one it knows. */
 static const char gsf_magic[] = "Gwyddion Simple Field";
 
-rc_grid *
-rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err)
+static int
+starts(const unsigned char *p, size_t n, const char *magic, size_t len)
+{
+	return n >= len && memcmp(p, magic, len) == 0;
+}
+
+/* Not text: a control character other than white space in the first
+ * 4 KiB (text in any ASCII-compatible encoding has none), or the text
+ * header of Bruker/Digital Instruments files, which lead to binary data. */
+static int
+looks_binary(rc_in *in)
+{
+	const unsigned char *p;
+	size_t n = rc_in_peek(in, 4096, &p);
+
+	for (size_t k = 0; k < n; k++)
+		if ((p[k] < 0x20 && !(p[k] >= '\t' && p[k] <= '\r')) ||
+		    p[k] == 0x7f)
+			return 1;
+	return starts(p, n, "\\*File list", 11) ||
+	    starts(p, n, "\\*Force file list", 17) ||
+	    starts(p, n, "\\*EC File list", 14);
+}
+
+typedef int (*mem_reader)(const unsigned char *, size_t, const rc_read_opts *,
+    rc_chanset *, rc_err *);
+
+static int
+gwy_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
+{
+	(void)o;
+	return rc_gwy_read(b, n, s, err);
+}
+
+static int
+x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
+{
+	(void)o;
+	return rc_x3p_read(b, n, s, err);
+}
+
+/* Not text and no format of ours: Gwyddion's.  If Gwyddion cannot read
+ * it either, the text reader has the last word: it reads text with a
+ * stray control character or says where it breaks. */
+static int
+vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
+    rc_err *err)
+{
+	unsigned char *buf = NULL;
+	size_t len = 0;
+	struct stat st;
+	rc_err gerr, terr;
+	rc_in *in2 = NULL;
+	rc_grid *g = NULL;
+	FILE *fp = NULL;
+	int is_file = path != NULL && stat(path, &st) == 0 && S_ISREG(st.st_mode);
+
+	if (!is_file && rc_in_slurp(in, &buf, &len, err) != 0)
+		return -1;
+	if (rc_gwyddion_read(is_file ? path : NULL, buf, len, s, &gerr) == 0) {
+		free(buf);
+		return 0;
+	}
+	rc_chanset_free(s);
+	fp = is_file ? fopen(path, "rb") : fmemopen(buf, len, "rb");
+	if (fp != NULL && (in2 = rc_malloc(sizeof(*in2), &terr)) != NULL) {
+		rc_in_init(in2, fp);
+		g = rc_txt_read(in2, o, &terr);
+	} else if (fp == NULL)
+		rc_seterr(&terr, "%s", strerror(errno));
+	free(in2);
+	if (fp != NULL)
+		fclose(fp);
+	free(buf);
+	if (g != NULL)
+		return rc_chanset_add(s, g, "", err);
+	return rc_seterr(err, "%s; read as text: %s", gerr.msg, terr.msg);
+}
+
+/* Every channel of the input; path is the file fp reads, if known (a
+ * vendor file is then handed to Gwyddion as it is). */
+static int
+read_channels(FILE *fp, const char *path, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
 {
 	rc_in *in;
 	const unsigned char *p;
-	rc_grid *g;
-	size_t n;
+	unsigned char *buf = NULL;
+	mem_reader whole = NULL;
+	rc_grid *g = NULL;
+	size_t n, len;
+	int r = -1;
 
 	if ((in = rc_malloc(sizeof(*in), err)) == NULL)
-		return NULL;
+		return -1;
 	rc_in_init(in, fp);
 	n = rc_in_peek(in, 32, &p);
 	if (rc_in_check(in, err) != 0)
-		g = NULL;
-	else if (n == 0) {
+		goto out;
+	if (n == 0) {
 		rc_seterr(err, "empty input");
-		g = NULL;
-	} else if (n >= 5 && memcmp(p, "#surf", 5) == 0)
+		goto out;
+	}
+	if (starts(p, n, "#surf", 5))
 		g = rc_surf_read(in, o, err);
-	else if (n >= 6 && memcmp(p, npy_magic, 6) == 0)
+	else if (starts(p, n, npy_magic, 6))
 		g = rc_npy_read(in, o, err);
-	else if (n >= sizeof(gsf_magic) - 1 &&
-	    memcmp(p, gsf_magic, sizeof(gsf_magic) - 1) == 0)
+	else if (starts(p, n, gsf_magic, sizeof(gsf_magic) - 1))
 		g = rc_gsf_read(in, o, err);
-	else
+	else if (starts(p, n, "aISO-1.0", 8) || starts(p, n, "bISO-1.0", 8) ||
+	    starts(p, n, "aBCR-1.0", 8) || starts(p, n, "bBCR-1.0", 8))
+		g = rc_sdf_read(in, o, err);
+	else if (starts(p, n, "GWYP", 4) || starts(p, n, "GWYO", 4))
+		whole = gwy_mem;
+	else if (starts(p, n, "PK\x03\x04", 4))
+		whole = x3p_mem;
+	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||
+	    starts(p, n, "CDF\x05", 4) || starts(p, n, "\x89HDF\r\n\x1a\n", 8))
+		whole = rc_nc_read;
+	else if (looks_binary(in)) {
+		r = vendor(in, path, o, s, err);
+		goto out;
+	} else
 		g = rc_txt_read(in, o, err);
+	if (whole != NULL) {
+		if (rc_in_slurp(in, &buf, &len, err) == 0)
+			r = whole(buf, len, o, s, err);
+		goto out;
+	}
+	if (g != NULL)
+		r = rc_chanset_add(s, g, "", err);
+out:
+	free(buf);
 	free(in);
+	return r;
+}
+
+/* The channel the options name, or the first one whose values are
+ * lengths (else the first); taken out of s. */
+static rc_grid *
+select_channel(rc_chanset *s, const rc_read_opts *o, rc_err *err)
+{
+	size_t pick = 0, k;
+	char q[64];
+	rc_grid *g;
+
+	if (o != NULL && o->channel_name != NULL) {
+		for (k = 0; k < s->n; k++)
+			if (strcmp(s->c[k].title, o->channel_name) == 0)
+				break;
+		if (k == s->n)
+			for (k = 0; k < s->n; k++)
+				if (strcasecmp(s->c[k].title, o->channel_name) == 0)
+					break;
+		if (k == s->n) {
+			rc_seterr(err, "no channel titled '%s' (%zu channel%s; "
+			    "surfstat --channels lists them)", rc_io_quote(q, sizeof(q),
+			    o->channel_name, strlen(o->channel_name)), s->n,
+			    s->n == 1 ? "" : "s");
+			return NULL;
+		}
+		pick = k;
+	} else if (o != NULL && o->channel > 0) {
+		if ((size_t)o->channel > s->n) {
+			rc_seterr(err, "no channel %d: the file has %zu (surfstat "
+			    "--channels lists them)", o->channel, s->n);
+			return NULL;
+		}
+		pick = (size_t)o->channel - 1;
+	} else {
+		for (k = 0; k < s->n; k++) {
+			const rc_grid *c = s->c[k].g;
+
+			if (rc_unit_is_length(c->z_unit[0] ? c->z_unit : c->unit))
+				break;
+		}
+		pick = k < s->n ? k : 0;
+	}
+	g = s->c[pick].g;
+	s->c[pick].g = NULL;
+	return g;
+}
+
+static rc_grid *
+read_grid(FILE *fp, const char *path, const rc_read_opts *o, rc_err *err)
+{
+	rc_chanset s = { 0 };
+	rc_grid *g = NULL;
+
+	if (read_channels(fp, path, o, &s, err) == 0)
+		g = select_channel(&s, o, err);
+	rc_chanset_free(&s);
 	if (g != NULL && rc_grid_read_finish(g, o, err) != 0) {
 		rc_grid_free(g);
 		g = NULL;
@@ -580,14 +749,20 @@ rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err)
 }
 
 rc_grid *
-rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err)
+rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err)
+{
+	return read_grid(fp, NULL, o, err);
+}
+
+/* The file at path opened for reading, or standard input. */
+static FILE *
+open_input(const char *path, rc_err *err)
 {
 	struct stat st;
-	rc_grid *g;
 	FILE *fp;
 
 	if (rc_is_stdio(path))
-		return rc_grid_read_stream(stdin, o, err);
+		return stdin;
 	if ((fp = fopen(path, "rb")) == NULL) {
 		rc_seterr(err, "%s", strerror(errno));
 		return NULL;
@@ -597,9 +772,57 @@ rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err)
 		rc_seterr(err, "is a directory");
 		return NULL;
 	}
-	g = rc_grid_read_stream(fp, o, err);
-	fclose(fp);
+	return fp;
+}
+
+rc_grid *
+rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err)
+{
+	rc_grid *g;
+	FILE *fp;
+
+	if ((fp = open_input(path, err)) == NULL)
+		return NULL;
+	g = read_grid(fp, fp == stdin ? NULL : path, o, err);
+	if (fp != stdin)
+		fclose(fp);
 	return g;
+}
+
+int
+rc_grid_list_channels(const char *path, const rc_read_opts *o,
+    rc_channel_info **info, size_t *n, rc_err *err)
+{
+	rc_chanset s = { 0 };
+	FILE *fp;
+	int r;
+
+	*info = NULL;
+	*n = 0;
+	if ((fp = open_input(path, err)) == NULL)
+		return -1;
+	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, err);
+	if (fp != stdin)
+		fclose(fp);
+	if (r == 0 && (*info = rc_calloc(s.n, sizeof(**info), err)) == NULL)
+		r = -1;
+	for (size_t k = 0; r == 0 && k < s.n; k++) {
+		const rc_grid *g = s.c[k].g;
+		rc_channel_info *c = &(*info)[k];
+
+		snprintf(c->title, sizeof(c->title), "%s", s.c[k].title);
+		strcpy(c->unit, g->unit);
+		strcpy(c->z_unit, g->z_unit);
+		c->nx = g->nx;
+		c->ny = g->ny;
+		c->lx = g->lx;
+		c->ly = g->ly;
+		c->has_mask = g->valid != NULL;
+	}
+	if (r == 0)
+		*n = s.n;
+	rc_chanset_free(&s);
+	return r;
 }
 
 void
@@ -612,7 +835,7 @@ rc_read_opts_init(rc_read_opts *o)
 int
 rc_format_from_name(const char *path)
 {
-	static const char *ext[] = { "surf", "npy", "gsf", "txt" };
+	static const char *ext[] = { "surf", "npy", "gsf", "txt", "x3p", "nc" };
 	const char *base, *dot;
 
 	if (rc_is_stdio(path))
@@ -621,7 +844,7 @@ rc_format_from_name(const char *path)
 	base = base ? base + 1 : path;
 	if ((dot = strrchr(base, '.')) == NULL || dot == base)
 		return RC_FMT_SURF;
-	for (int f = 0; f < 4; f++)
+	for (int f = 0; f < (int)(sizeof(ext) / sizeof(ext[0])); f++)
 		if (strcasecmp(dot + 1, ext[f]) == 0)
 			return f;
 	return -1;
@@ -635,6 +858,8 @@ rc_format_name(enum rc_format f)
 	case RC_FMT_NPY: return "npy";
 	case RC_FMT_GSF: return "gsf";
 	case RC_FMT_TXT: return "txt";
+	case RC_FMT_X3P: return "x3p";
+	case RC_FMT_NC: return "nc";
 	}
 	return "unknown";
 }
@@ -650,6 +875,8 @@ rc_grid_write_stream(const rc_grid *g, FILE *fp, enum rc_format fmt,
 	case RC_FMT_NPY: r = rc_npy_write(g, fp, err); break;
 	case RC_FMT_GSF: r = rc_gsf_write(g, fp, err); break;
 	case RC_FMT_TXT: r = rc_txt_write(g, fp, err); break;
+	case RC_FMT_X3P: r = rc_x3p_write(g, fp, err); break;
+	case RC_FMT_NC: r = rc_nc_write(g, fp, err); break;
 	default: return rc_seterr(err, "unknown output format %d", (int)fmt);
 	}
 	if (r == 0 && (fflush(fp) != 0 || ferror(fp)))

@@ -1,7 +1,10 @@
 /* io.h - reading and writing grids in every supported format.
  *
  * Formats: native .surf (text header + float64 LE, see surf(5)), .npy
- * (numpy), .gsf (Gwyddion Simple Field), .txt (whitespace matrix).  The
+ * (numpy), .gsf (Gwyddion Simple Field), .txt (whitespace matrix), .x3p
+ * (ISO 25178-72) and .nc (netCDF) read and written; .gwy (Gwyddion),
+ * SDF (ISO 25178-71) and, through Gwyddion when it is installed, every
+ * instrument format Gwyddion reads, read only.  The
  * output format follows the file name's extension (.surf when there is
  * none or the output is standard output); the input format is detected
  * from the content, so pipes work.  Readers reject anything inconsistent
@@ -18,7 +21,9 @@ enum rc_format {
 	RC_FMT_SURF = 0,
 	RC_FMT_NPY,
 	RC_FMT_GSF,
-	RC_FMT_TXT
+	RC_FMT_TXT,
+	RC_FMT_X3P,	/* ISO 25178-72 XML 3D (zip + main.xml) */
+	RC_FMT_NC	/* netCDF, contact.engineering convention */
 };
 
 enum rc_periodic_opt {
@@ -74,7 +79,8 @@ int rc_grid_list_channels(const char *path, const rc_read_opts *o,
 rc_grid *rc_grid_read(const char *path, const rc_read_opts *o, rc_err *err);
 rc_grid *rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err);
 
-/* By extension: .surf .npy .gsf .txt; anything else -> -1. NULL/"-" -> surf. */
+/* By extension: .surf .npy .gsf .txt .x3p .nc; anything else -> -1.
+ * NULL/"-" -> surf. */
 int rc_format_from_name(const char *path);
 const char *rc_format_name(enum rc_format f);
 

@@ -94,4 +94,48 @@ int rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err);
 
+/* The channels of one file (.gwy, x3p, netCDF, vendor formats through
+ * Gwyddion); a single-channel format gives one. */
+typedef struct rc_channel {
+	rc_grid *g;
+	char title[128];
+} rc_channel;
+typedef struct rc_chanset {
+	rc_channel *c;
+	size_t n, cap;
+} rc_chanset;
+/* Append g (the set owns it from now on, also on failure). */
+int rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err);
+void rc_chanset_free(rc_chanset *s);
+/* Store a unit string from a file in dst (32 bytes): "\xc2\xb5m" and
+ * "\xce\xbcm" become "um", anything too long is an error. */
+int rc_io_set_unit(char dst[32], const char *u, rc_err *err);
+/* Units of a length unit per metre (1e6 for "um"), 0 if u is none
+ * (the length units are those of units.h). */
+double rc_io_per_metre(const char *u);
+
+/* The rest of the input in memory (*buf malloc'ed, *len bytes), growing
+ * with what the input really holds. */
+int rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err);
+/* Exactly n bytes into a new buffer, allocating no more than about twice
+ * what the input holds; "truncated" if it holds fewer. */
+int rc_in_read_exact(rc_in *in, size_t n, unsigned char **buf, rc_err *err);
+
+/* Readers of whole files held in memory: every channel into s. */
+int rc_gwy_read(const unsigned char *buf, size_t len, rc_chanset *s,
+    rc_err *err);
+int rc_x3p_read(const unsigned char *buf, size_t len, rc_chanset *s,
+    rc_err *err);
+/* netCDF: o gives the cell size when the file has none. */
+int rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+rc_grid *rc_sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+/* Any other format: Gwyddion converts the file at path (or, path NULL,
+ * the len bytes at buf, spooled to a temporary file) to .gwy, which
+ * rc_gwy_read reads. */
+int rc_gwyddion_read(const char *path, const unsigned char *buf, size_t len,
+    rc_chanset *s, rc_err *err);
+int rc_x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err);
+
 #endif

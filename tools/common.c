@@ -345,6 +345,15 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 		else
 			t->wisdom = arg;
 		return 1;
+	case OPT_CHANNEL:
+		if (arg[0] == '\0')
+			tool_bad(t, "--channel: want a number or a title");
+		else if (strspn(arg, "0123456789") == strlen(arg) &&
+		    (strlen(arg) > 6 || atoi(arg) < 1))
+			tool_bad(t, "--channel %s: channels count from 1", arg);
+		else
+			t->channel = arg;
+		return 1;
 	case OPT_FFT_EFFORT:
 		if ((n = rc_fft_effort_parse(arg)) < 0 || n == RC_FFT_WISDOM)
 			tool_bad(t, "--fft-effort %s: want estimate, measure or patient",
@@ -509,8 +518,8 @@ tool_double_list(struct tool *t, const char *opt, const char *arg, double **v,
 	}
 }
 
-rc_grid *
-tool_read_grid(const struct tool *t, const char *path)
+static rc_grid *
+read_grid(const struct tool *t, const char *path, const char *channel)
 {
 	rc_read_opts o;
 	rc_err err;
@@ -524,6 +533,10 @@ tool_read_grid(const struct tool *t, const char *path)
 	o.z_unit = t->z_unit;
 	o.periodic = (enum rc_periodic_opt)t->periodic;
 	o.npy_xy = t->npy_xy;
+	if (channel != NULL && strspn(channel, "0123456789") == strlen(channel))
+		o.channel = atoi(channel);
+	else
+		o.channel_name = channel;
 
 	if (rc_is_stdio(path) && isatty(STDIN_FILENO))
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
@@ -538,6 +551,52 @@ tool_read_grid(const struct tool *t, const char *path)
 		    rc_grid_missing_count(g), rc_grid_size(g), t->name);
 	tool_grid_to_unit(t, g, path, t->unit);
 	return g;
+}
+
+rc_grid *
+tool_read_grid(const struct tool *t, const char *path)
+{
+	return read_grid(t, path, NULL);
+}
+
+rc_grid *
+tool_read_input(const struct tool *t, const char *path)
+{
+	return read_grid(t, path, t->channel);
+}
+
+void
+tool_list_channels(const struct tool *t, const char *path)
+{
+	rc_channel_info *c;
+	rc_read_opts o;
+	rc_err err;
+	size_t n;
+
+	rc_read_opts_init(&o);
+	o.lx = t->lx;
+	o.ly = t->ly;
+	o.have_l = t->have_l;
+	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
+		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		    err.msg);
+	printf("channel\ttitle\tnx\tny\tlx\tly\tunit\tz_unit\tmask\n");
+	for (size_t k = 0; k < n; k++) {
+		char lx[32], ly[32];
+
+		/* Titles are the file's: tabs and newlines would break the table. */
+		for (char *p = c[k].title; *p; p++)
+			if ((unsigned char)*p < 0x20)
+				*p = ' ';
+		rc_format_double(lx, sizeof(lx), c[k].lx);
+		rc_format_double(ly, sizeof(ly), c[k].ly);
+		printf("%zu\t%s\t%zu\t%zu\t%s\t%s\t%s\t%s\t%s\n", k + 1,
+		    c[k].title[0] ? c[k].title : "-", c[k].nx, c[k].ny, lx, ly,
+		    c[k].unit[0] ? c[k].unit : "-",
+		    c[k].z_unit[0] ? c[k].z_unit : "-", c[k].has_mask ? "yes" : "no");
+	}
+	free(c);
+	exit(tool_exit(t, 0));
 }
 
 void
@@ -598,7 +657,7 @@ void
 tool_check_grid_path(struct tool *t, const char *opt, const char *path)
 {
 	if (path != NULL && rc_format_from_name(path) < 0)
-		tool_bad(t, "%s %s: unknown extension; use .surf, .npy, .gsf or .txt",
+		tool_bad(t, "%s %s: unknown extension; use .surf, .npy, .gsf, .txt, .x3p or .nc",
 		    opt, path);
 }
 
@@ -609,7 +668,7 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 	int fmt = rc_format_from_name(path);
 
 	if (fmt < 0)
-		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf or .txt", path);
+		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf, .txt, .x3p or .nc", path);
 	if (rc_is_stdio(path) && fmt != RC_FMT_TXT && isatty(STDOUT_FILENO))
 		tool_fail(t, "standard output is a terminal; refusing to write binary "
 		    "data there (use -o FILE or a pipe)");

@@ -31,6 +31,7 @@ enum {
 	OPT_PERIODIC,
 	OPT_NO_PERIODIC,
 	OPT_NPY_ORDER,
+	OPT_CHANNEL,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -56,6 +57,7 @@ struct tool {
 	int periodic;		/* --periodic, --no-periodic (enum rc_periodic_opt) */
 	int npy_xy;		/* --npy-order xy */
 	int accept_missing;	/* the tool can use grids with missing points */
+	const char *channel;	/* --channel N|NAME of the main input, or NULL */
 	struct tool_file *files;	/* inputs and outputs (tool_input, tool_output) */
 	size_t nfiles;
 	const char *(*may_replace)[2];	/* (output, input) option pairs */
@@ -69,6 +71,10 @@ struct tool_file {
 	const char *path;	/* NULL for standard input */
 	int output;
 };
+
+/* --channel N|NAME, for the tools that read a height map. */
+#define TOOL_CHANNEL_LONGOPT \
+	{ "channel", required_argument, NULL, OPT_CHANNEL }
 
 /* The FFT options of the tools that plan transforms; put them in the
  * tool's struct option table. */
@@ -150,6 +156,12 @@ void tool_grid_to_unit(const struct tool *t, rc_grid *g, const char *path,
  * option, when the step across its edges is far above the steps inside
  * (rc_grid_wrap_ratio above RC_WRAP_RATIO_WARN). */
 void tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path);
+/* The same for the main input, whose channel --channel chooses. */
+rc_grid *tool_read_input(const struct tool *t, const char *path);
+/* surfstat --channels: one line per channel of the file (tab-separated
+ * index, title, nx, ny, lx, ly, unit, z_unit, mask); exits. */
+void tool_list_channels(const struct tool *t, const char *path)
+	__attribute__((noreturn));
 /* Append the command line to the history and write atomically; the format
  * follows the extension.  Refuses binary output to a terminal.  Exits 1 on
  * failure. */

@@ -203,6 +203,8 @@ usage(void)
 "  --z-unit U           the indenter's heights are in length unit U\n"
 "  --periodic, --no-periodic  the indenter is (not) one period of a surface\n"
 "  --npy-order yx|xy    .npy shape (ny, nx) (default) or (nx, ny)\n"
+"  --channel N|NAME     channel of a multi-channel input (default: the first\n"
+"                       whose values are lengths)\n"
 "  -h, --help           this help\n"
 "  --version            the version\n");
 }
@@ -236,6 +238,7 @@ main(int argc, char **argv)
 		GFMD_LONGOPTS,
 		TOOL_FFT_LONGOPTS,
 		TOOL_GRID_LONGOPTS,
+		TOOL_CHANNEL_LONGOPT,
 		{ NULL, 0, NULL, 0 }
 	};
 	struct tool t;
@@ -281,7 +284,7 @@ main(int argc, char **argv)
 	    o.nabsolute;
 
 	tool_fft_setup(&t);
-	h = tool_read_grid(&t, input);
+	h = tool_read_input(&t, input);
 	if (o.resume_path != NULL) {
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */

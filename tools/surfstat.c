@@ -41,7 +41,8 @@ enum {
 	OPT_MATERIAL_RATIO,
 	OPT_FIT,
 	OPT_MIN_WAVELENGTH,
-	OPT_MAX_WAVELENGTH
+	OPT_MAX_WAVELENGTH,
+	OPT_CHANNELS
 };
 
 enum table { T_SCALARS, T_PSD, T_ACF, T_BY_HEIGHT, T_PSD1D, T_ISO, T_MR, T_FIT };
@@ -85,6 +86,10 @@ usage(void)
 	    "  --z-unit U            the input's heights are in length unit U\n"
 	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
 	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
+	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
+	    "                        first whose values are lengths)\n"
+	    "  --channels            list the input's channels instead: channel title\n"
+	    "                        nx ny lx ly unit z_unit mask\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -113,6 +118,8 @@ static const struct option longopts[] = {
 	{ "fit", no_argument, NULL, OPT_FIT },
 	{ "min-wavelength", required_argument, NULL, OPT_MIN_WAVELENGTH },
 	{ "max-wavelength", required_argument, NULL, OPT_MAX_WAVELENGTH },
+	TOOL_CHANNEL_LONGOPT,
+	{ "channels", no_argument, NULL, OPT_CHANNELS },
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -504,7 +511,7 @@ main(int argc, char **argv)
 	enum rc_deriv_method method = RC_DERIV_SPECTRAL;
 	enum rc_window window = RC_WINDOW_AUTO;
 	enum rc_psd1d_dir dir1d = RC_PSD1D_X;
-	int ntables = 0, opt, acf_half = 0, have_window = 0, have_s = 0;
+	int ntables = 0, opt, acf_half = 0, have_window = 0, have_s = 0, list = 0;
 	size_t nbins = 0, nmr = 0;
 	double bpd = 10, acf_s = 0.2, min_wl = 0, max_wl = 0;
 	rc_fit_opts fo;
@@ -611,6 +618,9 @@ main(int argc, char **argv)
 		case OPT_FD:
 			method = RC_DERIV_FD;
 			break;
+		case OPT_CHANNELS:
+			list = 1;
+			break;
 		case OPT_BINS:
 			if (tool_double(&t, "--bins-per-decade", optarg, &bpd) == 0 &&
 			    !(bpd >= 1 && bpd <= 1000))
@@ -659,6 +669,8 @@ main(int argc, char **argv)
 	if (mask_path != NULL)
 		tool_input(&t, "--mask", mask_path);
 	tool_usage_check(&t);
+	if (list)
+		tool_list_channels(&t, in);
 
 	tool_fft_setup(&t);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
@@ -669,7 +681,7 @@ main(int argc, char **argv)
 	fo.q_min = max_wl > 0 ? 2 * M_PI / max_wl : 0;
 	/* only --iso and --material-ratio use the valid points alone */
 	t.accept_missing = table == T_ISO || table == T_MR;
-	g = tool_read_grid(&t, in);
+	g = tool_read_input(&t, in);
 	{
 		/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D
 		 * C(q) would scale with the meaningless strip width. */

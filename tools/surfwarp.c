@@ -73,7 +73,8 @@ usage(void)
 	    "                        xi standard normal per point: grid-scale roughness\n"
 	    "  --carve-seed S        seed of xi (default 1)\n"
 	    "  --rms-gradient G      finally scale heights to rms gradient G\n"
-	    "  -o FILE               output (.surf .npy .gsf .txt; default stdout, surf)\n"
+	    "  -o FILE               output (.surf .npy .gsf .txt .x3p .nc; default\n"
+	    "                        stdout, surf)\n"
 	    "  --png FILE            PNG preview of the result\n"
 	    "  -L LX[xLY]            cell size of an input that has none\n"
 	    "  --unit U              length unit of the output, and of H, DEPTH, A\n"
@@ -82,6 +83,8 @@ usage(void)
 	    "  --z-unit U            the input's heights are in length unit U\n"
 	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
 	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
+	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
+	    "                        first whose values are lengths)\n"
 	    "  -j N  threads   -q  quiet   -h, --help   --version\n");
 }
 
@@ -105,6 +108,7 @@ static const struct option longopts[] = {
 	{ "resample", required_argument, NULL, OPT_RESAMPLE },
 	{ "transpose", no_argument, NULL, OPT_TRANSPOSE },
 	TOOL_GRID_LONGOPTS,
+	TOOL_CHANNEL_LONGOPT,
 	{ NULL, 0, NULL, 0 }
 };
 
@@ -329,7 +333,7 @@ main(int argc, char **argv)
 	/* Levelling steps use the valid points; -w, --flip, --carve and the
 	 * renormalisation are refused below while points are missing. */
 	t.accept_missing = 1;
-	g = tool_read_grid(&t, in);
+	g = tool_read_input(&t, in);
 	for (size_t k = 0; k < nsteps; k++) {
 		g = apply(&t, g, &steps[k], filled_mask);
 		/* Levelling, cropping and resampling change the heights'

@@ -109,6 +109,52 @@ printf '# Width: 10 um\n# Height: 2 deg\n1 2\n3 4\n' >"$B/gwy-height-deg.txt"
 printf '# Width: 10 um\n# Height: 10 um\n# Value units: V\n1 2\n3 4\n' >"$B/gwy-value-volt.txt"
 printf '# Width: -3 um\n# Height: 10 um\n1 2\n3 4\n' >"$B/gwy-width-negative.txt"
 printf '# periodic = yes\n1 2\n3 4\n' >"$B/txt-periodic-yes.txt"
+# x3p, .gwy, netCDF, SDF: broken containers, lying lengths, wrong checksums
+surfgen -q -n 16 --seed 3 -o "$D/good.x3p"
+surfgen -q -n 16 --seed 3 -o "$D/good.nc"
+head -c 300 "$D/good.x3p" >"$B/x3p-truncated.x3p"
+head -c 200 "$D/good.nc" >"$B/nc-truncated.nc"
+python3 - "$D/good.x3p" "$B" <<'PY'
+import hashlib, re, struct, sys, zipfile
+good, bad = sys.argv[1], sys.argv[2]
+z = zipfile.ZipFile(good)
+xml, data = z.read("main.xml").decode(), z.read("bindata/data.bin")
+def x3p(name, files):
+    with zipfile.ZipFile(bad + "/" + name, "w") as o:
+        for k, v in files.items():
+            o.writestr(k, v)
+def with_sum(x):
+    return {"main.xml": x, "bindata/data.bin": data,
+            "md5checksum.hex": hashlib.md5(x.encode()).hexdigest() + " *main.xml\n"}
+x3p("x3p-no-main.x3p", {"bindata/data.bin": data})
+x3p("x3p-data-checksum.x3p", with_sum(re.sub("<MD5ChecksumPointData>[0-9a-f]*<",
+    "<MD5ChecksumPointData>00000000000000000000000000000000<", xml)))
+x3p("x3p-main-checksum.x3p", dict(with_sum(xml), **{"md5checksum.hex": "0" * 32 + " *main.xml\n"}))
+x3p("x3p-size-lie.x3p", with_sum(xml.replace("<SizeX>16<", "<SizeX>17<")))
+x3p("x3p-not-xml.x3p", with_sum("<ISO5436_2><Record1>"))
+x3p("x3p-no-data.x3p", {"main.xml": xml})
+# .gwy: a GwyContainer with one 16x16 field, then lies about its lengths
+def obj(t, body): return t.encode() + b"\0" + struct.pack("<I", len(body)) + body
+def comp(n, t, v): return n.encode() + b"\0" + t.encode() + v
+field = (comp("xres", "i", struct.pack("<i", 16)) + comp("yres", "i", struct.pack("<i", 16)) +
+         comp("data", "D", struct.pack("<I", 256) + bytes(8 * 256)))
+ok = b"GWYP" + obj("GwyContainer", comp("/0/data", "o", obj("GwyDataField", field)))
+open(bad + "/gwy-object-size-lie.gwy", "wb").write(ok[:4] + ok[4:17] + struct.pack("<I", 1 << 30) + ok[21:])
+open(bad + "/gwy-array-lie.gwy", "wb").write(ok.replace(struct.pack("<I", 256) + bytes(8), struct.pack("<I", 1 << 29) + bytes(8), 1))
+open(bad + "/gwy-truncated.gwy", "wb").write(ok[:100])
+open(bad + "/gwy-no-data.gwy", "wb").write(b"GWYP" + obj("GwyContainer", comp("/0/meta", "s", b"x\0")))
+# SDF
+sdf = ("aISO-1.0\nNumPoints = 3\nNumProfiles = 2\nXscale = 1e-6\nYscale = 1e-6\n"
+       "Zscale = 1e-9\nDataType = 7\n*\n1 2 3\n4 5\n*\n")
+open(bad + "/sdf-count.sdf", "w").write(sdf)
+open(bad + "/sdf-zero-scale.sdf", "w").write(sdf.replace("Xscale = 1e-6", "Xscale = 0").replace("4 5", "4 5 6"))
+open(bad + "/sdf-binary-truncated.sdf", "wb").write(b"bISO-1.0" + bytes(34) + struct.pack("<HH4d3B", 300, 300, 1e-6, 1e-6, 1e-9, -1, 0, 7, 0) + bytes(64))
+PY
+if command -v ncgen >/dev/null 2>&1; then
+	printf 'netcdf x {\ndimensions:\n\tx = 2 ;\nvariables:\n\tdouble depth(x) ;\ndata:\n depth = 1, 2 ;\n}\n' >"$B/nc.cdl"
+	ncgen -o "$B/nc-no-heights.nc" "$B/nc.cdl"
+	rm -f "$B/nc.cdl"
+fi
 mkdir "$B/a-directory"
 nfiles=$(ls "$B" | wc -l)
 

@@ -12,6 +12,9 @@
  * input is kept under tests/data/fuzz/read/, which test_fuzz_replay
  * feeds to this same function in `make check`.
  *
+ * Gwyddion is turned off (RC_GWYDDION empty): the harness tests our
+ * readers, not Gwyddion's, and runs no programs.
+ *
  * FUZZ_ENTRY names the entry point: LLVMFuzzerTestOneInput for libFuzzer,
  * something else when the replay test includes this file.
  */
@@ -73,6 +76,7 @@ FUZZ_ENTRY(const uint8_t *data, size_t size)
 
 	if (size == 0)
 		return 0;
+	setenv("RC_GWYDDION", "", 1);
 	if ((fp = fmemopen((void *)data, size, "rb")) != NULL) {
 		mem_tried = 1;
 		err.msg[0] = '\0';

@@ -16,7 +16,7 @@ seed_read() {
 	c=$1
 	cp "$top"/tests/data/io_small.* "$top"/tests/data/fuzz/read/* "$c"/ 2>/dev/null
 	[ -x "$bin/surfgen" ] || return 0
-	for ext in surf npy gsf txt; do
+	for ext in surf npy gsf txt x3p nc; do
 		"$bin/surfgen" -q -n 4x3 --seed 7 -o "$c/gen-4x3.$ext" 2>/dev/null
 		"$bin/surfgen" -q -n 1 --type flat -o "$c/gen-1.$ext" 2>/dev/null
 	done
@@ -48,6 +48,7 @@ for h in "$fz"/fuzz_*; do
 	"seed_$name" "$corpus"
 	# -timeout: an input slower than 10 s is a hang; -malloc_limit_mb: a
 	# reader must never allocate what the input does not hold.
+	LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$top/tests/fuzz/lsan.supp" \
 	"$h" -max_total_time="$secs" -timeout=10 -malloc_limit_mb=512 \
 	    -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
 	    -artifact_prefix="$arts/" "$corpus" >"$log" 2>&1

@@ -1,0 +1,348 @@
+/* io_nc.c - netCDF in the convention of the contact.engineering
+ * ecosystem (SurfaceTopography's NC reader and writer).
+ *
+ * Dimensions x (nx) and y (ny); variable heights(x, y), so the y index
+ * runs fastest in the file while our grid runs x fastest (we transpose);
+ * optional coordinate variables x(x) and y(y) (pixel centres) whose
+ * attributes carry the physical size (length), the unit of lengths and
+ * heights (length_unit; one unit for both) and the periodic flag
+ * (periodic, non-zero = periodic; absent = not periodic).  Missing points
+ * are NaN (or the heights' _FillValue).  We write the classic 64-bit
+ * offset format that SurfaceTopography's default writer (scipy) writes
+ * and reads; we read any netCDF the library opens (also netCDF-4).
+ * Heights are written as stored: when the grid's height unit differs from
+ * its lateral one, the lengths are converted to the height unit.
+ */
+#include "io_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <netcdf.h>
+#include <netcdf_mem.h>
+
+static int
+nc_fail(rc_err *err, const char *what, int status)
+{
+	return rc_seterr(err, "netCDF: %s: %s", what, nc_strerror(status));
+}
+
+/* Attribute att of variable name as a number / text; 0 if present. */
+static int
+att_double(int nc, int var, const char *att, double *v)
+{
+	size_t len;
+	nc_type t;
+
+	if (nc_inq_att(nc, var, att, &t, &len) != NC_NOERR || len != 1 ||
+	    t == NC_CHAR || t == NC_STRING)
+		return -1;
+	return nc_get_att_double(nc, var, att, v) == NC_NOERR ? 0 : -1;
+}
+
+static int
+att_text(int nc, int var, const char *att, char *buf, size_t cap)
+{
+	size_t len;
+	nc_type t;
+
+	if (nc_inq_att(nc, var, att, &t, &len) != NC_NOERR || t != NC_CHAR ||
+	    len >= cap)
+		return -1;
+	if (nc_get_att_text(nc, var, att, buf) != NC_NOERR)
+		return -1;
+	buf[len] = '\0';
+	return 0;
+}
+
+/* The classic header (CDF-1, -2, -5) walked before libnetcdf sees it:
+ * libnetcdf allocates what the header's counts claim, so every count must
+ * be covered by the bytes that follow it (each element takes at least
+ * one, or four, bytes).  A header that passes costs no more memory than
+ * the file's size. */
+struct hcur {
+	const unsigned char *p, *end;
+	int wide;	/* CDF-5: 64-bit counts */
+};
+
+static int
+h_count(struct hcur *c, uint64_t *v)
+{
+	size_t w = c->wide ? 8 : 4;
+
+	if ((size_t)(c->end - c->p) < w)
+		return -1;
+	*v = 0;
+	for (size_t k = 0; k < w; k++)
+		*v = *v << 8 | c->p[k];
+	c->p += w;
+	return 0;
+}
+
+static int
+h_skip(struct hcur *c, uint64_t n, uint64_t unit)
+{
+	uint64_t bytes;
+
+	if (unit != 0 && n > (uint64_t)(c->end - c->p) / unit)
+		return -1;
+	bytes = (n * unit + 3) & ~(uint64_t)3;	/* padded to 4 */
+	if (bytes > (uint64_t)(c->end - c->p))
+		return -1;
+	c->p += bytes;
+	return 0;
+}
+
+static int
+h_u32(struct hcur *c, uint32_t *v)
+{
+	if (c->end - c->p < 4)
+		return -1;
+	*v = (uint32_t)c->p[0] << 24 | (uint32_t)c->p[1] << 16 |
+	    (uint32_t)c->p[2] << 8 | c->p[3];
+	c->p += 4;
+	return 0;
+}
+
+static int
+h_name(struct hcur *c)
+{
+	uint64_t n;
+
+	return h_count(c, &n) != 0 ? -1 : h_skip(c, n, 1);
+}
+
+/* An attribute list (tag already read as 0x0C or ABSENT). */
+static int
+h_atts(struct hcur *c)
+{
+	static const unsigned size[13] = { 0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8 };
+	uint32_t tag, type;
+	uint64_t n, m;
+
+	if (h_u32(c, &tag) != 0 || h_count(c, &n) != 0)
+		return -1;
+	if (tag == 0)
+		return n == 0 ? 0 : -1;
+	if (tag != 0x0C || n > (uint64_t)(c->end - c->p) / 4)
+		return -1;
+	for (uint64_t k = 0; k < n; k++)
+		if (h_name(c) != 0 || h_u32(c, &type) != 0 || type < 1 ||
+		    type > 11 || h_count(c, &m) != 0 || h_skip(c, m, size[type]))
+			return -1;
+	return 0;
+}
+
+static int
+classic_header_ok(const unsigned char *buf, size_t len)
+{
+	struct hcur c = { buf + 4, buf + len, buf[3] == 5 };
+	uint32_t tag, type;
+	uint64_t n, m, v;
+
+	if (h_count(&c, &v) != 0)	/* numrecs */
+		return 0;
+	/* Dimensions. */
+	if (h_u32(&c, &tag) != 0 || h_count(&c, &n) != 0 ||
+	    (tag != 0x0A && !(tag == 0 && n == 0)) ||
+	    n > (uint64_t)(c.end - c.p) / 4)
+		return 0;
+	for (uint64_t k = 0; k < n; k++)
+		if (h_name(&c) != 0 || h_count(&c, &v) != 0)
+			return 0;
+	if (h_atts(&c) != 0)
+		return 0;
+	/* Variables: name, dimension ids, attributes, type, size, begin. */
+	if (h_u32(&c, &tag) != 0 || h_count(&c, &n) != 0 ||
+	    (tag != 0x0B && !(tag == 0 && n == 0)) ||
+	    n > (uint64_t)(c.end - c.p) / 4)
+		return 0;
+	for (uint64_t k = 0; k < n; k++) {
+		if (h_name(&c) != 0 || h_count(&c, &m) != 0 ||
+		    h_skip(&c, m, c.wide ? 8 : 4) != 0 || h_atts(&c) != 0 ||
+		    h_u32(&c, &type) != 0 || h_count(&c, &v) != 0 ||
+		    h_skip(&c, 1, buf[3] == 1 ? 4 : 8) != 0)
+			return 0;
+	}
+	return 1;
+}
+
+int
+rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
+{
+	int nc, hv, xv = -1, yv = -1, ndims, dims[2], st, r = -1;
+	size_t nx, ny, n;
+	double lx = 1, ly = 1, per = 0, fill, *t = NULL;
+	char unit[64] = "";
+	int classic = len >= 3 && memcmp(buf, "CDF", 3) == 0;
+	nc_type type;
+	rc_grid *g = NULL;
+
+	if (o != NULL && o->have_l) {
+		lx = o->lx;
+		ly = o->ly;
+	}
+	if (classic && (len < 4 || !classic_header_ok(buf, len)))
+		return rc_seterr(err, "not a readable netCDF file: corrupt or "
+		    "truncated header");
+	if ((st = nc_open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
+	    NC_NOERR)
+		return rc_seterr(err, "not a readable netCDF file: %s", nc_strerror(st));
+	if (nc_inq_varid(nc, "heights", &hv) != NC_NOERR) {
+		rc_seterr(err, "netCDF file has no variable 'heights' (the "
+		    "contact.engineering convention)");
+		goto out;
+	}
+	if ((st = nc_inq_var(nc, hv, NULL, &type, &ndims, NULL, NULL)) != NC_NOERR)
+		goto nc;
+	if (ndims != 2) {
+		rc_seterr(err, "netCDF: heights has %d dimensions, not 2", ndims);
+		goto out;
+	}
+	if (type == NC_CHAR || type == NC_STRING || type >= NC_VLEN) {
+		rc_seterr(err, "netCDF: heights is not numeric");
+		goto out;
+	}
+	if ((st = nc_inq_vardimid(nc, hv, dims)) != NC_NOERR ||
+	    (st = nc_inq_dimlen(nc, dims[0], &nx)) != NC_NOERR ||
+	    (st = nc_inq_dimlen(nc, dims[1], &ny)) != NC_NOERR)
+		goto nc;
+	if (rc_grid_check_shape(nx, ny, 1, 1, err) != 0)
+		goto out;
+	n = nx * ny;
+	/* A classic file stores every value; a netCDF-4 one may compress,
+	 * by at most about 1000 (deflate).  Either way a lying header costs
+	 * no memory. */
+	if (classic ? n > len : n / 1024 > len) {
+		rc_seterr(err, "netCDF: heights of %zux%zu cannot fit in %zu bytes",
+		    nx, ny, len);
+		goto out;
+	}
+	if (nc_inq_varid(nc, "x", &xv) == NC_NOERR) {
+		att_double(nc, xv, "length", &lx);
+		att_double(nc, xv, "periodic", &per);
+		att_text(nc, xv, "length_unit", unit, sizeof(unit));
+	}
+	if (nc_inq_varid(nc, "y", &yv) == NC_NOERR)
+		att_double(nc, yv, "length", &ly);
+	if ((t = rc_malloc(n * sizeof(double), err)) == NULL)
+		goto out;
+	if ((st = nc_get_var_double(nc, hv, t)) != NC_NOERR)
+		goto nc;
+	if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+		goto out;
+	if (unit[0] != '\0' && (rc_io_set_unit(g->unit, unit, err) != 0 ||
+	    rc_io_set_unit(g->z_unit, unit, err) != 0))
+		goto out;
+	g->periodic = per != 0;
+	for (size_t i = 0; i < nx; i++)
+		for (size_t j = 0; j < ny; j++)
+			g->z[j * nx + i] = t[i * ny + j];
+	if (att_double(nc, hv, "_FillValue", &fill) != 0)
+		fill = NAN;
+	for (size_t k = 0; k < n; k++)
+		if (isnan(g->z[k]) || g->z[k] == fill) {
+			if (g->valid == NULL) {
+				if ((g->valid = rc_malloc(n, err)) == NULL)
+					goto out;
+				memset(g->valid, 1, n);
+			}
+			g->valid[k] = 0;
+			g->z[k] = NAN;
+		}
+	r = rc_chanset_add(s, g, "heights", err);
+	g = NULL;
+	goto out;
+nc:
+	nc_fail(err, "heights", st);
+out:
+	rc_grid_free(g);
+	free(t);
+	nc_close(nc);
+	return r;
+}
+
+int
+rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
+{
+	size_t nx = g->nx, ny = g->ny, n = nx * ny;
+	int nc, dx, dy, xv, yv, hv, dims[2], st, per = g->periodic ? 1 : 0;
+	double lx = g->lx, ly = g->ly, *t = NULL;
+	const char *unit = g->unit;
+	NC_memio mem = { 0, NULL, 0 };
+	int r = -1, open = 0;
+
+	/* One unit for all: the heights' (they stay bit for bit). */
+	if (g->z_unit[0] != '\0' && strcmp(g->z_unit, g->unit) != 0) {
+		double from = rc_io_per_metre(g->unit), to = rc_io_per_metre(g->z_unit);
+
+		if (from == 0 || to == 0)
+			return rc_seterr(err, "netCDF (contact.engineering) holds "
+			    "lengths and heights in one length unit; '%s' and '%s' "
+			    "are not both lengths", g->unit[0] ? g->unit : "(none)",
+			    g->z_unit);
+		lx = lx / from * to;
+		ly = ly / from * to;
+		unit = g->z_unit;
+	}
+	if ((t = rc_malloc((n > nx + ny ? n : nx + ny) * sizeof(double), err)) ==
+	    NULL)
+		return -1;
+	if ((st = nc_create_mem("output.nc", NC_64BIT_OFFSET, 8 * n + 4096, &nc))
+	    != NC_NOERR) {
+		free(t);
+		return nc_fail(err, "create", st);
+	}
+	open = 1;
+	if ((st = nc_def_dim(nc, "x", nx, &dx)) != NC_NOERR ||
+	    (st = nc_def_dim(nc, "y", ny, &dy)) != NC_NOERR ||
+	    (st = nc_def_var(nc, "x", NC_DOUBLE, 1, &dx, &xv)) != NC_NOERR ||
+	    (st = nc_def_var(nc, "y", NC_DOUBLE, 1, &dy, &yv)) != NC_NOERR)
+		goto nc;
+	dims[0] = dx;
+	dims[1] = dy;
+	if ((st = nc_def_var(nc, "heights", NC_DOUBLE, 2, dims, &hv)) != NC_NOERR)
+		goto nc;
+	for (int k = 0; k < 2; k++) {
+		int v = k ? yv : xv;
+		double l = k ? ly : lx;
+
+		if ((st = nc_put_att_double(nc, v, "length", NC_DOUBLE, 1, &l)) !=
+		    NC_NOERR || (st = nc_put_att_int(nc, v, "periodic", NC_INT, 1,
+		    &per)) != NC_NOERR)
+			goto nc;
+		if (unit[0] != '\0' && (st = nc_put_att_text(nc, v, "length_unit",
+		    strlen(unit), unit)) != NC_NOERR)
+			goto nc;
+	}
+	if ((st = nc_enddef(nc)) != NC_NOERR)
+		goto nc;
+	for (size_t i = 0; i < nx; i++)
+		t[i] = ((double)i + 0.5) * lx / (double)nx;
+	if ((st = nc_put_var_double(nc, xv, t)) != NC_NOERR)
+		goto nc;
+	for (size_t j = 0; j < ny; j++)
+		t[j] = ((double)j + 0.5) * ly / (double)ny;
+	if ((st = nc_put_var_double(nc, yv, t)) != NC_NOERR)
+		goto nc;
+	for (size_t i = 0; i < nx; i++)
+		for (size_t j = 0; j < ny; j++)
+			t[i * ny + j] = g->valid && !g->valid[j * nx + i] ? NAN :
+			    g->z[j * nx + i];
+	if ((st = nc_put_var_double(nc, hv, t)) != NC_NOERR)
+		goto nc;
+	open = 0;
+	if ((st = nc_close_memio(nc, &mem)) != NC_NOERR)
+		goto nc;
+	r = rc_io_write(fp, mem.memory, mem.size, err);
+	goto out;
+nc:
+	nc_fail(err, "write", st);
+out:
+	if (open)
+		nc_abort(nc);
+	free(mem.memory);
+	free(t);
+	return r;
+}
