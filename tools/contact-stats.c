@@ -30,6 +30,7 @@ enum {
 	OPT_THERMO,
 	OPT_ALPHA_T,
 	OPT_LENIENT,
+	OPT_ALLOW_UNCONVERGED,
 	OPT_GNUPLOT,
 	OPT_SCHEDULE,
 	OPT_EPS_REF,
@@ -66,6 +67,8 @@ usage(void)
 "  --thermo            extrapolate eps_t = lambda_r/lx -> 0\n"
 "  --alpha-t K|auto    exponent of the eps_t correction (default 1)\n"
 "  --lenient           skip bad rows and groups, with a warning count\n"
+"  --allow-unconverged use rows whose residual exceeds their tol (refused\n"
+"                      by default), with a warning\n"
 "  --gnuplot FILE      write a gnuplot script plotting kappa vs p* to a PNG\n"
 "  --png FILE          run that script through gnuplot, writing FILE\n"
 "  --schedule          print eps(p) = eps_ref (p/p_ref)^(1/4) (Eq. 27)\n"
@@ -149,6 +152,7 @@ parse(int argc, char **argv, struct opts *o)
 		{ "thermo", no_argument, NULL, OPT_THERMO },
 		{ "alpha-t", required_argument, NULL, OPT_ALPHA_T },
 		{ "lenient", no_argument, NULL, OPT_LENIENT },
+		{ "allow-unconverged", no_argument, NULL, OPT_ALLOW_UNCONVERGED },
 		{ "gnuplot", required_argument, NULL, OPT_GNUPLOT },
 		{ "schedule", no_argument, NULL, OPT_SCHEDULE },
 		{ "eps-ref", required_argument, NULL, OPT_EPS_REF },
@@ -209,6 +213,7 @@ parse(int argc, char **argv, struct opts *o)
 		case OPT_FRACTAL: cs->fractal = 1; break;
 		case OPT_THERMO: cs->thermo = 1; break;
 		case OPT_LENIENT: cs->lenient = 1; break;
+		case OPT_ALLOW_UNCONVERGED: cs->allow_unconverged = 1; break;
 		case OPT_SCHEDULE: o->schedule = 1; break;
 		case OPT_GNUPLOT: o->gnuplot = optarg; break;
 		case OPT_ALPHA_F:

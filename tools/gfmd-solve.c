@@ -467,6 +467,7 @@ main(int argc, char **argv)
 			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
+			    .tol = o.so.tol,
 			    .seconds = res.seconds, .plan_seconds = plan_seconds,
 			    .method = rc_method_name(o.so.method), .indenter = h,
 			    .nx = h->nx, .ny = h->ny };

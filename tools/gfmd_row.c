@@ -25,6 +25,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "patch_size_char", st->patch_size_char) ||
 	    rc_row_int(row, "iterations", in->iterations) ||
 	    rc_row_num(row, "residual", in->residual) ||
+	    rc_row_num(row, "tol", in->tol) ||
 	    rc_row_num(row, "seconds", in->seconds) ||
 	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
 	    rc_row_str(row, "method", in->method) ||

@@ -13,7 +13,8 @@ struct gfmd_row {
 	const rc_contact_stats *stats;
 	double mean_gap, elastic_energy;
 	long iterations;
-	double residual, seconds, plan_seconds;
+	double residual, tol;		/* reached, and asked for */
+	double seconds, plan_seconds;
 	const char *method;
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */

@@ -198,6 +198,7 @@ main(int argc, char **argv)
 			    .stats = &st, .mean_gap = mean_gap,
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
+			    .tol = o.so.tol,
 			    .seconds = seconds, .plan_seconds = plan_seconds,
 			    .method = "fire", .indenter = h, .nx = h->nx, .ny = ny };
 

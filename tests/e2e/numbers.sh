@@ -1,0 +1,43 @@
+# numbers.sh - no wrong number passes silently: unconverged rows are
+# refused by contact-stats, non-finite results never leave a tool with
+# exit 0, option messages name the option that is wrong.
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+export OMP_WAIT_POLICY=passive
+
+# ---- convergence: rows carry their tolerance, contact-stats checks it ----
+surfgen -n 32 --seed 3 --lambda-s 0.0625 -o s32.surf
+surfgen -n 64 --seed 3 --lambda-s 0.0625 -o s64.surf
+gfmd-solve -q -p 0.05 -o c32.tsv s32.surf
+gfmd-solve -q -p 0.05 -o c64.tsv s64.surf
+gfmd-solve -q -p 0.05 --max-iter 3 -o u64.tsv s64.surf 2>/dev/null
+check "gfmd-solve rows carry tol = --tol (default 1e-6)" [ "$(col c32.tsv tol)" = 1e-06 ]
+gfmd-solve -q -p 0.05 --tol 1e-4 -o t.tsv s32.surf
+check "gfmd-solve rows carry tol = --tol 1e-4" [ "$(col t.tsv tol)" = 0.0001 ]
+check_status "converged rows are accepted" 0 contact-stats c32.tsv c64.tsv
+check_status "--max-iter 3 rows are refused" 1 contact-stats c32.tsv u64.tsv
+check "... naming the file and line" grep -q "u64.tsv:2: residual .* exceeds the row's tolerance" "$T_TMP/stderr"
+check_status "--allow-unconverged uses them" 0 contact-stats --allow-unconverged -o allow.tsv c32.tsv u64.tsv
+check "... with a warning" grep -q "1 row from unconverged solves" "$T_TMP/stderr"
+# The unconverged a_r differs from the converged one (it is why they are
+# refused): the extrapolation from it is not the converged answer.
+contact-stats -o conv.tsv c32.tsv c64.tsv
+check "the unconverged rows change a_r" [ "$(col allow.tsv a_r)" != "$(col conv.tsv a_r)" ]
+# Older rows without tol: held to residual <= 1e-3.
+awk -F'\t' -v OFS='\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "tol") k = i }
+    { out = ""; for (i = 1; i <= NF; i++) if (i != k) out = out (out == "" ? "" : OFS) $i; print out }' \
+    u64.tsv > old-unconv.tsv
+awk -F'\t' -v OFS='\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "tol") k = i }
+    { out = ""; for (i = 1; i <= NF; i++) if (i != k) out = out (out == "" ? "" : OFS) $i; print out }' \
+    c64.tsv > old-conv.tsv
+check_status "rows without tol, residual > 1e-3: refused" 1 contact-stats c32.tsv old-unconv.tsv
+check "... saying why" grep -q "old-unconv.tsv:2: residual .* exceeds 0.001 (the row has no tol column)" "$T_TMP/stderr"
+check_status "rows without tol, converged: accepted" 0 contact-stats c32.tsv old-conv.tsv
+check_status "--lenient skips an unconverged row (then too few grids)" 1 contact-stats --lenient c32.tsv u64.tsv
+# A killed run: its last row cut short, then another run appended with cat.
+head -c "$(($(wc -c < c64.tsv) - 30))" c64.tsv > killed.tsv
+cat killed.tsv c32.tsv > joined.tsv
+check_status "a killed run's cut row, concatenated: refused" 1 contact-stats joined.tsv
+check "... naming the line" grep -q "joined.tsv:2:" "$T_TMP/stderr"
+
+summary
