@@ -1,6 +1,7 @@
 /* common.c - shared tool plumbing (see common.h). */
 #include "common.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <math.h>
 #include <stdarg.h>
@@ -69,6 +70,19 @@ tool_fail(const struct tool *t, const char *fmt, ...)
 }
 
 void
+tool_fail_at(const struct tool *t, const char *what, const char *why)
+{
+	size_t n;
+
+	if (what == NULL)	/* an output left to standard output */
+		what = "standard output";
+	n = strlen(what);
+	if (strncmp(why, what, n) == 0 && strncmp(why + n, ": ", 2) == 0)
+		tool_fail(t, "%s", why);
+	tool_fail(t, "%s: %s", what, why);
+}
+
+void
 tool_bad(struct tool *t, const char *fmt, ...)
 {
 	va_list ap;
@@ -77,6 +91,57 @@ tool_bad(struct tool *t, const char *fmt, ...)
 	vmsg(t, fmt, ap);
 	va_end(ap);
 	t->nbad++;
+}
+
+void
+tool_bad_option(struct tool *t, const char *optstring,
+    const struct option *longopts, char **argv)
+{
+	/* getopt_long leaves optind past a long option, but inside a group
+	 * of short ones ("-qx") it may still point at the group: a long
+	 * option is recognised by its name matching the option code. */
+	const char *arg = optind > 0 ? argv[optind - 1] : NULL;
+	const struct option *lo = NULL;
+	size_t len = 0;
+
+	if (arg != NULL && strncmp(arg, "--", 2) == 0 && arg[2] != '\0') {
+		len = strcspn(arg + 2, "=");
+		if (optopt == 0) {
+			char names[256] = "";
+			int nmatch = 0;
+			/* an abbreviation of several: name them */
+			for (lo = longopts; lo != NULL && lo->name != NULL; lo++)
+				if (len > 0 && strncmp(lo->name, arg + 2, len) == 0 &&
+				    nmatch++ < 4) {
+					size_t used = strlen(names);
+					snprintf(names + used, sizeof(names) - used, "%s--%s",
+					    used ? ", " : "", lo->name);
+				}
+			if (nmatch > 1)
+				tool_bad(t, "--%.*s: ambiguous: %s%s", (int)len, arg + 2,
+				    names, nmatch > 4 ? ", ..." : "");
+			else
+				tool_bad(t, "--%.*s: unknown option", (int)len, arg + 2);
+			return;
+		}
+		for (lo = longopts; lo != NULL && lo->name != NULL; lo++)
+			if (lo->flag == NULL && lo->val == optopt &&
+			    strncmp(lo->name, arg + 2, len) == 0)
+				break;
+	}
+	if (lo != NULL && lo->name != NULL) {
+		if (lo->has_arg == no_argument)
+			tool_bad(t, "--%s: takes no value (given '%s')", lo->name,
+			    arg[2 + len] == '=' ? arg + 3 + len : "");
+		else
+			tool_bad(t, "--%s: needs a value", lo->name);
+	} else if (optopt > 0 && optopt < 128 && isgraph(optopt) &&
+	    optopt != ':' && strchr(optstring, optopt) != NULL)
+		tool_bad(t, "-%c: needs a value", optopt);
+	else if (optopt > 0 && optopt < 128 && isgraph(optopt))
+		tool_bad(t, "-%c: unknown option", optopt);
+	else
+		tool_bad(t, "%s: unknown option", arg != NULL ? arg : "?");
 }
 
 void
@@ -149,7 +214,7 @@ tool_fft_setup(struct tool *t)
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;
 	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)
-		tool_fail(t, "%s: %s", t->wisdom, err.msg);
+		tool_fail_at(t, t->wisdom, err.msg);
 }
 
 enum rc_fft_effort
@@ -308,7 +373,7 @@ tool_read_grid(const struct tool *t, const char *path)
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
 	g = rc_grid_read(path, &o, &err);
 	if (g == NULL)
-		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		tool_fail_at(t, rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
 	return g;
 }
@@ -346,7 +411,7 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 		    "data there (use -o FILE or a pipe)");
 	if (rc_grid_history_add(g, t->cmdline, &err) != 0 ||
 	    rc_grid_write(g, path, (enum rc_format)fmt, &err) != 0)
-		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard output" : path,
+		tool_fail_at(t, rc_is_stdio(path) ? "standard output" : path,
 		    err.msg);
 	/* The history line belongs to this output only. */
 	free(g->history[--g->nhistory]);

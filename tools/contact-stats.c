@@ -231,16 +231,7 @@ parse(int argc, char **argv, struct opts *o)
 			o->have_p_ref = 1;
 			break;
 		case '?':
-			/* optopt: the option whose argument is missing (a letter or
-			 * a long option's code), 0 for an unknown long one */
-			if (optopt > 0 && optopt < 128 && strchr(optstring, optopt))
-				tool_bad(&t, "-%c: missing argument", optopt);
-			else if (optopt > 0 && optopt < 128)
-				tool_bad(&t, "-%c: unknown option", optopt);
-			else if (optopt != 0)
-				tool_bad(&t, "%s: missing argument", argv[optind - 1]);
-			else
-				tool_bad(&t, "%s: unknown option", argv[optind - 1]);
+			tool_bad_option(&t, optstring, longopts, argv);
 			break;
 		default:
 			tool_common_option(&t, c, optarg);

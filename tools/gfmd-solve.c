@@ -245,7 +245,7 @@ main(int argc, char **argv)
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */
 		if (rc_checkpoint_read(&saved, &saved_u, o.resume_path, &err) != 0)
-			tool_fail(&t, "%s: %s", o.resume_path, err.msg);
+			tool_fail_at(&t, o.resume_path, err.msg);
 		if (!o.given_method && (method = rc_method_parse(saved.method)) >= 0)
 			o.so.method = (enum rc_method)method;
 		if (!o.given_tol)
@@ -327,7 +327,7 @@ main(int argc, char **argv)
 			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    u->nx, u->ny, h->nx, h->ny);
 		if (rc_solver_set_displacement(solver, u->z, &err) != 0)
-			tool_fail(&t, "%s: %s", o.init, err.msg);
+			tool_fail_at(&t, o.init, err.msg);
 		rc_grid_free(u);
 	}
 	if (o.resume_path != NULL) {
@@ -347,7 +347,7 @@ main(int argc, char **argv)
 	sigaction(SIGTERM, &sa, NULL);
 
 	if (rc_atomic_open(&out, t.out, &err) != 0)
-		tool_fail(&t, "%s: %s", t.out, err.msg);
+		tool_fail_at(&t, t.out, err.msg);
 	rc_table_begin(&table, out.fp, t.json);
 	rc_row_init(&row);
 	rc_contact_defaults(&co);
@@ -365,7 +365,7 @@ main(int argc, char **argv)
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
-			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 		}
 	}
 	if (o.resume_path != NULL && first >= npressures) {
@@ -479,7 +479,7 @@ main(int argc, char **argv)
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
-			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 		}
 		if (fflush(out.fp) != 0) {
 			rc_atomic_abort(&out);
@@ -540,7 +540,7 @@ main(int argc, char **argv)
 	sigaction(SIGTERM, &(struct sigaction){ .sa_handler = SIG_DFL }, NULL);
 	if (rc_table_end(&table, &err) != 0 || rc_atomic_commit(&out, &err) != 0) {
 		rc_atomic_abort(&out);
-		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+		tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 	}
 	if (!o.fd)
 		rc_fft_free(&fft);
@@ -588,7 +588,7 @@ main(int argc, char **argv)
 				rc_png_defaults(&po);
 				po.overlay = g;
 				if (rc_png_write(h, t.png, &po, &err) != 0)
-					tool_fail(&t, "%s: %s", t.png, err.msg);
+					tool_fail_at(&t, t.png, err.msg);
 			}
 			rc_grid_free(g);
 		}

@@ -44,6 +44,13 @@ pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
 		}
 }
 
+/* Every long option either build may take, for naming a bad one. */
+static const struct option all_longopts[] = {
+	GFMD_LONGOPTS,
+	TOOL_FFT_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
+
 void
 gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
     char **argv)
@@ -117,16 +124,7 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->resume_path = arg;
 		break;
 	case '?':
-		/* optopt: the option whose argument is missing (a long
-		 * option's code, or a letter), 0 for an unknown long one. */
-		if (optopt > 0 && optopt < 128 && strchr(GFMD_OPTSTRING, optopt))
-			tool_bad(t, "-%c: missing argument", optopt);
-		else if (optopt > 0 && optopt < 128)
-			tool_bad(t, "-%c: unknown option", optopt);
-		else if (optopt != 0)
-			tool_bad(t, "%s: missing argument", argv[optind - 1]);
-		else
-			tool_bad(t, "%s: unknown option", argv[optind - 1]);
+		tool_bad_option(t, GFMD_OPTSTRING, all_longopts, argv);
 		break;
 	default:
 		tool_common_option(t, c, arg);

@@ -40,4 +40,31 @@ cat killed.tsv c32.tsv > joined.tsv
 check_status "a killed run's cut row, concatenated: refused" 1 contact-stats joined.tsv
 check "... naming the line" grep -q "joined.tsv:2:" "$T_TMP/stderr"
 
+# ---- option messages name the option as typed (one helper, every tool) ----
+# msg DESC WANT CMD...: exit 2 and the first stderr line is exactly WANT
+msg() {
+	d=$1; want=$2; shift 2
+	"$@" >/dev/null 2>err.txt; st=$?
+	got=$(head -n 1 err.txt)
+	if [ "$st" = 2 ] && [ "$got" = "$want" ]; then pass "$d"; else fail "$d: exit $st, '$got', expected '$want'"; fi
+}
+msg "surfgen --lambda-r without a value" "surfgen: --lambda-r: needs a value" surfgen --lambda-r
+msg "surfstat --mask without a value" "surfstat: --mask: needs a value" surfstat --mask
+msg "surfwarp --flip=1" "surfwarp: --flip: takes no value (given '1')" surfwarp --flip=1 s32.surf
+msg "surfwarp -w without a value" "surfwarp: -w: needs a value" surfwarp -w
+msg "surfwarp -qz: the unknown letter" "surfwarp: -z: unknown option" surfwarp -qz s32.surf
+msg "gfmd-solve --tol without a value" "gfmd-solve: --tol: needs a value" gfmd-solve -p 0.1 s32.surf --tol
+msg "gfmd-solve abbreviation --tol without a value" "gfmd-solve: --tol: needs a value" gfmd-solve -p 0.1 s32.surf --to
+msg "gfmd-solve --wisdom without a value" "gfmd-solve: --wisdom: needs a value" gfmd-solve -p 0.1 s32.surf --wisdom
+msg "surfgen ambiguous --lambda" "surfgen: --lambda: ambiguous: --lambda-r, --lambda-s" surfgen --lambda 0.5
+msg "contact-stats --lenient=1" "contact-stats: --lenient: takes no value (given '1')" contact-stats --lenient=1 c32.tsv
+msg "contact-stats unknown -x" "contact-stats: -x: unknown option" contact-stats -x c32.tsv
+# A file the library names is named once.
+check_status "surfgen -o into a missing directory" 1 surfgen -n 8 -o nodir/a.surf
+check "... names the path once" [ "$(grep -o 'nodir/a.surf' "$T_TMP/stderr" | wc -l)" -eq 1 ]
+check_status "gfmd-solve -o into a missing directory" 1 gfmd-solve -q -p 0.1 -o nodir/a.tsv s32.surf
+check "... names the path once" [ "$(grep -o 'nodir/a.tsv' "$T_TMP/stderr" | wc -l)" -eq 1 ]
+check_status "surfstat --gnuplot into a missing directory" 1 surfstat --gnuplot nodir/a.gp s32.surf
+check "... names the path once" [ "$(grep -o 'nodir/a.gp' "$T_TMP/stderr" | wc -l)" -eq 1 ]
+
 summary

@@ -68,7 +68,7 @@ write_field(const struct tool *t, const rc_grid *h, size_t ny,
 	    rc_grid_history_add(g, t->cmdline, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	if (rc_mpi_surf_write(g, ny, local, path, &err) != 0)
-		tool_fail(t, "%s: %s", path, err.msg);
+		tool_fail_at(t, path, err.msg);
 	rc_grid_free(g);
 }
 
@@ -129,7 +129,7 @@ main(int argc, char **argv)
 	mpitool_threads(&t);
 
 	if ((h = rc_mpi_surf_read(argv[optind], &ny, &height, &err)) == NULL)
-		tool_fail(&t, "%s: %s", argv[optind], err.msg);
+		tool_fail_at(&t, argv[optind], err.msg);
 	o.so.modulus = o.modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
@@ -153,7 +153,7 @@ main(int argc, char **argv)
 		rc_grid *uh = rc_mpi_surf_read(o.init, &init_ny, &u, &err);
 
 		if (uh == NULL)
-			tool_fail(&t, "%s: %s", o.init, err.msg);
+			tool_fail_at(&t, o.init, err.msg);
 		if (uh->nx != h->nx || init_ny != ny)
 			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    uh->nx, init_ny, h->nx, ny);
