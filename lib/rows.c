@@ -651,7 +651,10 @@ parse_json(rc_rowset *rs, const char *buf, size_t len, const char *name,
 		goto fail;
 	}
 	jws(&j);
-	j.pos++;		/* the '[' the caller saw */
+	/* One array, or several one after another (outputs joined with cat,
+	 * like TSV sections). */
+next_array:
+	j.pos++;		/* the '[' the caller or the loop saw */
 	jws(&j);
 	if (jpeek(&j) == ']')
 		j.pos++;
@@ -678,6 +681,8 @@ parse_json(rc_rowset *rs, const char *buf, size_t len, const char *name,
 			}
 		}
 	jws(&j);
+	if (jpeek(&j) == '[')
+		goto next_array;
 	if (j.pos < j.len) {
 		jfail(&j, "trailing data after the array");
 		goto fail;

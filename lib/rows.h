@@ -14,7 +14,8 @@
  * blank lines and lines starting with '#' are skipped; a line equal to the
  * header (files joined with cat) starts a new section with that header.
  * JSON: detected by '[' as the first non-blank character; objects whose
- * values are strings, numbers, true/false (kept as text) or null.
+ * values are strings, numbers, true/false (kept as text) or null; several
+ * arrays one after another (files joined with cat) are read as one.
  */
 #ifndef RC_ROWS_H
 #define RC_ROWS_H

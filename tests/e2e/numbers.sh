@@ -67,4 +67,66 @@ check "... names the path once" [ "$(grep -o 'nodir/a.tsv' "$T_TMP/stderr" | wc 
 check_status "surfstat --gnuplot into a missing directory" 1 surfstat --gnuplot nodir/a.gp s32.surf
 check "... names the path once" [ "$(grep -o 'nodir/a.gp' "$T_TMP/stderr" | wc -l)" -eq 1 ]
 
+# ---- --json is valid JSON for every value ----
+# A surface whose metadata strtod reads as numbers JSON does not have
+# (Infinity, +5, 0x10, NaN, 1e999), bytes that are not UTF-8, quotes and
+# backslashes: the header rewritten with its data offset recomputed.
+hostile() {
+	python3 - "$1" "$2" <<'PY'
+import sys
+data = open(sys.argv[1], 'rb').read()
+hdr = data[:data.index(b'end_header')].decode()
+off = int([l for l in hdr.splitlines() if l.startswith('data_offset')][0].split('=')[1])
+keep = [l.encode() for l in hdr.splitlines() if not l.startswith(('data_offset', 'history'))]
+meta = [b'meta.inf = Infinity', b'meta.plus = +5', b'meta.hex = 0x10', b'meta.nanv = NaN',
+        b'meta.big = 1e999', b'meta.bad = \xff\xfe caf\xc3\xa9', b'meta.quote = say "hi" \\ back']
+build = lambda o: b'\n'.join(keep + [b'data_offset = %d' % o] + meta + [b'end_header']) + b'\n'
+n = len(build(0))
+while len(build(n)) != n:
+	n = len(build(n))
+open(sys.argv[2], 'wb').write(build(n) + data[off:])
+PY
+}
+# json_ok FILE [KEY=VALUE...]: python's strict parser reads FILE (no NaN or
+# Infinity constants) and its first row has these string values (VALUE a
+# python literal)
+json_ok() {
+	python3 -c 'import ast, json, sys
+d = json.load(open(sys.argv[1], encoding="utf-8"), parse_constant=lambda c: sys.exit("constant " + c))
+for kv in sys.argv[2:]:
+	k, v = kv.split("=", 1)
+	if d[0].get(k) != ast.literal_eval(v):
+		sys.exit("%s: %s, expected %s" % (k, ascii(d[0].get(k)), v))' "$@"
+}
+if command -v python3 >/dev/null 2>&1; then
+	hostile s32.surf hostile.surf
+	check_status "surfstat reads the hostile metadata" 0 surfstat --json -o h-stat.json hostile.surf
+	check "surfstat --json is valid JSON" json_ok h-stat.json
+	check "... non-JSON numbers are strings, bad bytes U+FFFD" json_ok h-stat.json \
+	    "inf='Infinity'" "plus='+5'" "hex='0x10'" "nanv='NaN'" "big='1e999'" \
+	    "bad='\\ufffd\\ufffd caf\\xe9'" "quote='say \"hi\" \\\\ back'" "H=0.8"
+	gfmd-solve -q --json -p 0.05 -o h-gfmd.json hostile.surf
+	check "gfmd-solve --json is valid JSON, the same strings" json_ok h-gfmd.json \
+	    "inf='Infinity'" "big='1e999'" "bad='\\ufffd\\ufffd caf\\xe9'"
+	# Control characters in a key column reach contact-stats' JSON escaped.
+	for n in 32 64; do
+		awk -F'\t' -v OFS='\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "amplitudes") k = i; print; next }
+		    { $k = "sq\001rt\177\"\\"; print }' c$n.tsv > k$n.tsv
+	done
+	contact-stats --json -o k.json k32.tsv k64.tsv
+	check "contact-stats --json with control characters is valid JSON and keeps them" \
+	    json_ok k.json "amplitudes='sq\\x01rt\\x7f\"\\\\'"
+fi
+# Concatenated --json outputs read like concatenated TSV.
+gfmd-solve -q --json -p 0.05 -o c32.json s32.surf
+gfmd-solve -q --json -p 0.05 -o c64.json s64.surf
+cat c32.json c64.json > both.json
+cat c32.tsv c64.tsv > both.tsv
+check_status "contact-stats reads concatenated JSON" 0 contact-stats -o both-json.out both.json
+contact-stats -o both-tsv.out both.tsv
+check "... with the result of the concatenated TSV" [ "$(col both-json.out a_r)" = "$(col both-tsv.out a_r)" ]
+check_rel "... which is the a_r of the two files" "$(col both-json.out a_r)" "$(col conv.tsv a_r)" 0
+printf '[]\n{"x": 1}\n' > notarray.json
+check_status "an object after the arrays is still an error" 1 contact-stats notarray.json
+
 summary
