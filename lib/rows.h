@@ -35,6 +35,9 @@ typedef struct rc_rowrec {
 typedef struct rc_rowset {
 	size_t ncols;
 	char **col;		/* union of the column names, first-seen order */
+	size_t *colhash;	/* open-addressing index of col: entry k + 1 for
+				 * column k, 0 empty; hashcap a power of two */
+	size_t hashcap;
 	size_t nrows, caprows;
 	rc_rowrec *row;
 	size_t nfiles;

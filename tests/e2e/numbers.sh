@@ -129,4 +129,20 @@ check_rel "... which is the a_r of the two files" "$(col both-json.out a_r)" "$(
 printf '[]\n{"x": 1}\n' > notarray.json
 check_status "an object after the arrays is still an error" 1 contact-stats notarray.json
 
+# ---- a wide table (20000 carried key columns, 0.56 MB) ----
+# Column names are looked up by hash: the reader and the key building are
+# linear in the table's size (bench/bench_cstats_wide.sh has the figures).
+awk -v n=20000 'BEGIN { h = "p_star\ta_r\tnx\tny\tlx"
+	for (i = 1; i <= n; i++) h = h "\tc" i; print h
+	for (r = 0; r < 4; r++) { nx = r % 2 ? 64 : 32
+		# a_r = 0.1 + eps_c, eps_c = 1/nx (no lambda_s): limit 0.1
+		l = 0.05 * (1 + int(r / 2)) "\t" 0.1 + 1 / nx "\t" nx "\t" nx "\t1"
+		for (i = 1; i <= n; i++) l = l "\t" i; print l } }' > wide.tsv
+check_status "a table of 20000 columns" 0 contact-stats -q -o wide.out wide.tsv
+check_rel "... extrapolates a_r = 0.1 + 1/nx to 0.1" "$(col wide.out a_r 1)" 0.1 1e-12
+check "... and carries the last key column" [ "$(col wide.out c20000 2)" = 20000 ]
+printf 'a\tb\tc\tb\n1\t2\t3\t4\n' > dupcol.tsv
+check_status "a duplicate column name is still an error" 1 contact-stats dupcol.tsv
+check "... naming both fields" grep -q "header fields 2 and 4: duplicate column name 'b'" "$T_TMP/stderr"
+
 summary
