@@ -34,7 +34,7 @@ struct tool {
 	const char *out;	/* -o FILE, NULL for standard output */
 	const char *png;	/* --png FILE */
 	int quiet;		/* -q */
-	int threads;		/* -j N, 0 = all cores */
+	int threads;		/* -j N (at most the cores), 0 = all cores */
 	int json;		/* --json */
 	double lx, ly;		/* -L, cell size for inputs that have none */
 	int have_l;

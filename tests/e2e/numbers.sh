@@ -145,4 +145,13 @@ printf 'a\tb\tc\tb\n1\t2\t3\t4\n' > dupcol.tsv
 check_status "a duplicate column name is still an error" 1 contact-stats dupcol.tsv
 check "... naming both fields" grep -q "header fields 2 and 4: duplicate column name 'b'" "$T_TMP/stderr"
 
+# ---- -j above the core count is clamped, with a note ----
+cores=$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN)
+check_status "gfmd-solve -j 4096" 0 gfmd-solve -q -j 4096 -p 0.05 -o j4096.tsv s32.surf
+check "... says it uses the $cores cores" grep -q -- "-j 4096: more threads than the $cores core.* available; using $cores\$" "$T_TMP/stderr"
+gfmd-solve -q -j 1 -p 0.05 -o j1.tsv s32.surf
+check "... and finds the contact of -j 1" [ "$(col j4096.tsv n_c)" = "$(col j1.tsv n_c)" ]
+check_status "surfgen -j $cores: no note" 0 surfgen -j "$cores" -n 8 -o j.surf
+check "... (stderr empty)" [ ! -s "$T_TMP/stderr" ]
+
 summary
