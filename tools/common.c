@@ -3,6 +3,7 @@
 
 #include <ctype.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -16,11 +17,27 @@
 #include "atomic.h"
 #include "fft.h"
 
+/* A standard descriptor left closed (2>&-) would be the next file opened,
+ * and messages for stderr would land in that file, a result table
+ * perhaps: each closed one is held by /dev/null, opened so that it fails
+ * as the closed one did, except stderr (its messages just vanish). */
+static void
+hold_closed_stdio(void)
+{
+	static const int mode[3] = { O_WRONLY, O_RDONLY, O_WRONLY };
+
+	for (int fd = 0; fd < 3; fd++)
+		if (fcntl(fd, F_GETFD) < 0 && errno == EBADF &&
+		    open("/dev/null", mode[fd]) != fd)
+			_exit(1);	/* nowhere safe to write: no message */
+}
+
 void
 tool_init(struct tool *t, const char *name, int argc, char **argv)
 {
 	size_t len = 1;
 
+	hold_closed_stdio();
 	memset(t, 0, sizeof(*t));
 	t->name = name;
 	t->lx = t->ly = 1.0;

@@ -154,4 +154,12 @@ check "... and finds the contact of -j 1" [ "$(col j4096.tsv n_c)" = "$(col j1.t
 check_status "surfgen -j $cores: no note" 0 surfgen -j "$cores" -n 8 -o j.surf
 check "... (stderr empty)" [ ! -s "$T_TMP/stderr" ]
 
+# ---- with stderr closed, warnings never land in the result table ----
+gfmd-solve -q --max-iter 3 -p 0.05,0.1 -o closed.tsv s32.surf 2>&-
+check "gfmd-solve 2>&-: the table holds the header and two rows only" [ "$(wc -l < closed.tsv)" -eq 3 ]
+check "... no warning text in it" [ "$(grep -c 'not converged' closed.tsv)" -eq 0 ]
+contact-stats --allow-unconverged -o closed-cs.tsv c32.tsv u64.tsv 2>&-
+check "contact-stats 2>&-: no warning in its table" [ "$(grep -c 'unconverged' closed-cs.tsv)" -eq 0 ]
+check_status "stdout closed: the table's write fails (exit 1), not lost silently" 1 sh -c 'surfstat s32.surf >&-'
+
 summary
