@@ -439,6 +439,14 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 	if (rc_is_stdio(path) && fmt != RC_FMT_TXT && isatty(STDOUT_FILENO))
 		tool_fail(t, "standard output is a terminal; refusing to write binary "
 		    "data there (use -o FILE or a pipe)");
+	/* No NaN or infinity leaves a tool (but at missing points, which
+	 * are NaN by convention): a result that overflowed is an error. */
+	for (size_t k = 0; k < rc_grid_size(g); k++)
+		if (!isfinite(g->z[k]) && (g->valid == NULL || g->valid[k]))
+			tool_fail(t, "%s: the result's value at i=%zu, j=%zu is %s; "
+			    "not written (the options overflow on this input)",
+			    rc_is_stdio(path) ? "standard output" : path, k % g->nx,
+			    k / g->nx, isnan(g->z[k]) ? "NaN" : "infinite");
 	if (rc_grid_history_add(g, t->cmdline, &err) != 0 ||
 	    rc_grid_write(g, path, (enum rc_format)fmt, &err) != 0)
 		tool_fail_at(t, rc_is_stdio(path) ? "standard output" : path,

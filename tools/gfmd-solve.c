@@ -301,6 +301,15 @@ main(int argc, char **argv)
 	else if (rc_fft_init(&fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &fft, &gbar, &err) != 0)
 		tool_fail(&t, "%s", err.msg);
+	{
+		double lo = INFINITY, hi = -INFINITY;
+
+		for (size_t k = 0; k < rc_grid_size(h); k++) {
+			lo = fmin(lo, h->z[k]);
+			hi = fmax(hi, h->z[k]);
+		}
+		gfmd_check_scale(&t, input, hi - lo, gbar);
+	}
 	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
@@ -472,6 +481,11 @@ main(int argc, char **argv)
 			    .method = rc_method_name(o.so.method), .indenter = h,
 			    .nx = h->nx, .ny = h->ny };
 
+			const char *why = gfmd_kappa_c_why(&in);
+
+			if (why != NULL)
+				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
+				    why);
 			if (gfmd_result_row(&row, &in) != 0) {
 				rc_atomic_abort(&out);
 				tool_fail(&t, "out of memory");

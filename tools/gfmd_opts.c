@@ -1,6 +1,7 @@
 /* gfmd_opts.c - gfmd-solve's options (see gfmd_opts.h). */
 #include "gfmd_opts.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -172,4 +173,22 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	tool_not_input(t, "-o", t->out, o->init);
 	tool_not_input(t, "--png", t->png, o->init);
 	tool_not_input(t, "--checkpoint", o->ck_path, o->init);
+}
+
+void
+gfmd_check_scale(const struct tool *t, const char *input, double range,
+    double gbar)
+{
+	const char *in = input == NULL || rc_is_stdio(input) ?
+	    "standard input" : input;
+	int bad_range = range != 0 && !isnan(range) &&
+	    !(range >= GFMD_SCALE_MIN && range <= GFMD_SCALE_MAX);
+	int bad_gbar = gbar != 0 &&
+	    !(gbar >= GFMD_SCALE_MIN && gbar <= GFMD_SCALE_MAX);
+
+	if (bad_range || bad_gbar)
+		tool_fail(t, "%s: heights spanning %g with rms gradient %g: outside "
+		    "[%g, %g], where the solve would overflow or underflow; "
+		    "rescale the surface (e.g. surfwarp --rms-gradient 1)", in,
+		    range, gbar, GFMD_SCALE_MIN, GFMD_SCALE_MAX);
 }

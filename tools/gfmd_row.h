@@ -22,5 +22,8 @@ struct gfmd_row {
 
 /* Fill row (cleared first); 0, or -1 when out of memory. */
 int gfmd_result_row(rc_row *row, const struct gfmd_row *in);
+/* The reason (a static string) why kappa_c, written as nan, cannot be
+ * computed for this row, or NULL when it is a number. */
+const char *gfmd_kappa_c_why(const struct gfmd_row *in);
 
 #endif

@@ -162,4 +162,52 @@ contact-stats --allow-unconverged -o closed-cs.tsv c32.tsv u64.tsv 2>&-
 check "contact-stats 2>&-: no warning in its table" [ "$(grep -c 'unconverged' closed-cs.tsv)" -eq 0 ]
 check_status "stdout closed: the table's write fails (exit 1), not lost silently" 1 sh -c 'surfstat s32.surf >&-'
 
+# ---- non-finite values never leave a tool with exit 0 ----
+# finite_surf FILE: surfstat reads it (it refuses NaN and infinities)
+finite_surf() { surfstat "$1" > /dev/null 2>&1; }
+check_status "surfwarp --hmin -1e308 --hmax 1e308: refused" 1 surfwarp -w 2 --hmin -1e308 --hmax 1e308 -o w1.surf s32.surf
+check "... naming the bounds" grep -q "hmax - hmin = 1e+308 - (-1e+308) overflows" "$T_TMP/stderr"
+check "... and writing nothing" [ ! -e w1.surf ]
+surfwarp -w 2 --hmin -1e307 --hmax 1e307 -o w2.surf s32.surf
+check "surfwarp with bounds 1e307 apart: finite heights" finite_surf w2.surf
+gfmd-solve -q -p 0.05 --contact c32.surf -o /dev/null s32.surf
+check_status "surfwarp --carve-width 1e-300: finite" 0 surfwarp --carve c32.surf 1 --carve-width 1e-300 -o w3.surf s32.surf
+check "... heights" finite_surf w3.surf
+# A width far below the grid spacing is a step: depth 1 everywhere off contact.
+check_rel "... a step of the depth: range grows by 1" \
+    "$(surfstat w3.surf | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "hmin") k = i } NR == 2 { print $k }')" \
+    "$(surfstat s32.surf | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "hmin") k = i } NR == 2 { printf "%.17g", $k - 1 }')" 1e-12
+check_status "surfwarp --carve 1e308 deep with 1e308 roughness: refused" 1 surfwarp --carve c32.surf 1e308 --carve-rough 1e308 -o w4.surf s32.surf
+check "... saying it overflows" grep -q "overflows the height" "$T_TMP/stderr"
+# Harmonic: z = -r^2/(2 R); at the cell corner r^2 = 1/2, so hmin = -1/(4 R).
+check_status "surfgen harmonic --radius 1e-300" 0 surfgen --type harmonic -n 16 --radius 1e-300 -o hr.surf
+check "... finite" finite_surf hr.surf
+check_rel "... hmin = -1/(4 R) = -2.5e299" "$(surfstat hr.surf | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "hmin") k = i } NR == 2 { print $k }')" -2.5e299 1e-12
+check_status "surfgen harmonic --radius 1e-300 --exponent 4: refused" 1 surfgen --type harmonic -n 16 --radius 1e-300 --exponent 4 -o hr4.surf
+check "... naming the radius" grep -q "overflows: a larger --radius" "$T_TMP/stderr"
+# surfstat near 1e150: the same statistics as the unscaled surface (the
+# scale-free ones equal, the others times 1e150), to round-off.
+surfgen -n 32 --seed 3 --lambda-s 0.0625 --rms-height 1e150 -o big.surf
+surfgen -n 32 --seed 3 --lambda-s 0.0625 --rms-height 1 -o one.surf
+surfstat -o big.tsv big.surf
+surfstat -o one.tsv one.surf
+for c in skewness kurtosis nayak phi1 phi4 phi6 phi8; do
+	check_rel "surfstat at 1e150: $c as at 1" "$(col big.tsv $c)" "$(col one.tsv $c)" 1e-9
+done
+for c in gbar gbar_fd rms_laplacian hrms; do
+	check_rel "surfstat at 1e150: $c = 1e150 times that at 1" "$(col big.tsv $c)" "$(awk -v v="$(col one.tsv $c)" 'BEGIN { printf "%.17g", v * 1e150 }')" 1e-9
+done
+surfstat --by-height 3 -o bigh.tsv big.surf
+surfstat --by-height 3 -o oneh.tsv one.surf
+check_rel "surfstat --by-height at 1e150: gxx = 1e300 times" "$(col bigh.tsv gxx 2)" "$(awk -v v="$(col oneh.tsv gxx 2)" 'BEGIN { printf "%.17g", v * 1e300 }')" 1e-9
+# gfmd-solve names the surface, not "p = inf".
+check_status "gfmd-solve on heights near 1e150: refused" 1 gfmd-solve -q -p 0.05 big.surf
+check "... naming the surface and its scale" grep -q "^gfmd-solve: big.surf: heights spanning .* outside \[1e-100, 1e+100\]" "$T_TMP/stderr"
+# One contact point at a harmonic apex: gbar_c = 0, kappa_c nan, said why.
+surfgen --type harmonic -n 64 -o hh.surf
+check_status "gfmd-solve: a one-point contact" 0 gfmd-solve -q -p 1e-6 -o one-point.tsv hh.surf
+check "... n_c = 1" [ "$(col one-point.tsv n_c)" = 1 ]
+check "... kappa_c nan" [ "$(col one-point.tsv kappa_c)" = nan ]
+check "... and a warning says why" grep -q "kappa_c written as nan: the rms gradient over the contact, gbar_c, is 0" "$T_TMP/stderr"
+
 summary

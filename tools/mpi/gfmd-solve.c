@@ -143,6 +143,7 @@ main(int argc, char **argv)
 	rc_mpi_max(&plan_seconds, 1);
 	rc_mpi_rows(h->nx, ny, &rows, &j0, &alloc);
 	gbar = rc_mpi_gbar(solver);
+	gfmd_check_scale(&t, argv[optind], NAN, gbar);
 	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
@@ -202,6 +203,11 @@ main(int argc, char **argv)
 			    .seconds = seconds, .plan_seconds = plan_seconds,
 			    .method = "fire", .indenter = h, .nx = h->nx, .ny = ny };
 
+			const char *why = gfmd_kappa_c_why(&in);
+
+			if (why != NULL && rank == 0)
+				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
+				    why);
 			if (gfmd_result_row(&row, &in) != 0)
 				tool_fail(&t, "out of memory");
 		}
