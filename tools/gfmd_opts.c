@@ -186,9 +186,15 @@ gfmd_check_scale(const struct tool *t, const char *input, double range,
 	int bad_gbar = gbar != 0 &&
 	    !(gbar >= GFMD_SCALE_MIN && gbar <= GFMD_SCALE_MAX);
 
-	if (bad_range || bad_gbar)
-		tool_fail(t, "%s: heights spanning %g with rms gradient %g: outside "
-		    "[%g, %g], where the solve would overflow or underflow; "
-		    "rescale the surface (e.g. surfwarp --rms-gradient 1)", in,
-		    range, gbar, GFMD_SCALE_MIN, GFMD_SCALE_MAX);
+	if (!bad_range && !bad_gbar)
+		return;
+	if (isnan(range))
+		tool_fail(t, "%s: rms gradient %g: outside [%g, %g], where the "
+		    "solve would overflow or underflow; rescale the surface (e.g. "
+		    "surfwarp --rms-gradient 1)", in, gbar, GFMD_SCALE_MIN,
+		    GFMD_SCALE_MAX);
+	tool_fail(t, "%s: heights spanning %g with rms gradient %g: outside "
+	    "[%g, %g], where the solve would overflow or underflow; rescale the "
+	    "surface (e.g. surfwarp --rms-gradient 1)", in, range, gbar,
+	    GFMD_SCALE_MIN, GFMD_SCALE_MAX);
 }
