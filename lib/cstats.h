@@ -17,6 +17,14 @@
 /* Eq. 23: the alpha the paper suggests for Eq. 22. */
 #define RC_YASTREBOV_ALPHA_011 0.11
 
+/* Convergence of the input rows: a row whose residual exceeds the
+ * tolerance it was solved to (its tol column) comes from an unconverged
+ * solve and is refused unless allow_unconverged.  Rows written before the
+ * tol column existed are held to this residual instead: ten times looser
+ * than anything gfmd-solve's accuracy table needs (1e-3 moved a_r by one
+ * contact point there).  Rows without a residual are taken as they are. */
+#define RC_CSTATS_RESIDUAL_NO_TOL 1e-3
+
 typedef struct rc_cstats_opts {
 	const char *const *group_by;	/* key columns instead of all carried */
 	size_t ngroup_by;
@@ -31,6 +39,8 @@ typedef struct rc_cstats_opts {
 	int per_seed;		/* no ensemble average */
 	int fractal, thermo;	/* take these limits */
 	int lenient;		/* skip bad rows and groups, counted */
+	int allow_unconverged;	/* use rows whose residual exceeds their
+				 * tolerance (with a warning) */
 } rc_cstats_opts;
 
 /* Defaults: linear models, finest fit, alpha = RC_YASTREBOV_ALPHA. */
@@ -38,7 +48,8 @@ void rc_cstats_opts_default(rc_cstats_opts *o);
 
 enum rc_cstats_warn_kind {
 	RC_CSTATS_WARN_MISSING,	/* an optional input column is missing */
-	RC_CSTATS_WARN_CLAMPED	/* an extrapolated a_r left [0, 1] */
+	RC_CSTATS_WARN_CLAMPED,	/* an extrapolated a_r left [0, 1] */
+	RC_CSTATS_WARN_UNCONVERGED	/* rows used by allow_unconverged */
 };
 
 typedef struct rc_cstats_point {

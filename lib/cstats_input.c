@@ -18,7 +18,7 @@ static const char *const output_cols[] = {
 	"p_star", "p", "a_r", "n_c", "n_cl", "n_tot", "a_yastrebov", "gbar",
 	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap", "approach",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
-	"residual", "seconds", "plan_seconds", "nx", "ny", NULL
+	"residual", "tol", "seconds", "plan_seconds", "nx", "ny", NULL
 };
 
 /* Metadata derived from the sampled heights, which differ slightly between
@@ -413,16 +413,58 @@ check_row(struct ctx *c, size_t i, struct rec *x)
 	return 0;
 }
 
+/* Did row i's solve converge (RC_CSTATS_RESIDUAL_NO_TOL in cstats.h)?  0
+ * if so or if it cannot tell; 1 if not (with allow_unconverged, counted
+ * in *nbad, the first in *first); -1 if not and the row is refused. */
+static int
+check_converged(struct ctx *c, size_t i, size_t *nbad, size_t *first)
+{
+	int kres = rc_rows_column(c->rs, "residual");
+	int ktol = rc_rows_column(c->rs, "tol");
+	double res, tol = RC_CSTATS_RESIDUAL_NO_TOL;
+	int have_tol = rc_rows_str(c->rs, i, ktol) != NULL;
+
+	if (rc_rows_str(c->rs, i, kres) == NULL)
+		return 0;
+	if (opt_num(c, i, "residual", &res) != 0 ||
+	    (have_tol && opt_num(c, i, "tol", &tol) != 0))
+		return -1;
+	if (have_tol && !(tol > 0)) {
+		rc__cs_bad(c, "%s: column 'tol': %g is not a positive tolerance",
+		    rc__cs_where(c, i), tol);
+		return -1;
+	}
+	if (res <= tol)
+		return 0;
+	if (c->o->allow_unconverged) {
+		if ((*nbad)++ == 0)
+			*first = i;
+		return 1;
+	}
+	if (have_tol)
+		rc__cs_bad(c, "%s: residual %.3g exceeds the row's tolerance tol = "
+		    "%.3g: an unconverged solve (gfmd-solve --max-iter?); solve "
+		    "it again, or --allow-unconverged", rc__cs_where(c, i), res,
+		    tol);
+	else
+		rc__cs_bad(c, "%s: residual %.3g exceeds %.3g (the row has no tol "
+		    "column): an unconverged solve; solve it again, or "
+		    "--allow-unconverged", rc__cs_where(c, i), res,
+		    RC_CSTATS_RESIDUAL_NO_TOL);
+	return -1;
+}
+
 struct rec *
 rc__cs_validate(struct ctx *c, size_t *nrec)
 {
 	const rc_rowset *rs = c->rs;
 	struct rec *r = rc__cs_pool_alloc(c, rs->nrows, sizeof(*r));
-	size_t n = 0;
+	size_t n = 0, nunconv = 0, first_unconv = 0;
 	int warned_gbar_c = 0, warned_ncl = 0;
 
 	for (size_t i = 0; i < rs->nrows; i++) {
-		if (check_row(c, i, &r[n]) != 0)
+		if (check_row(c, i, &r[n]) != 0 ||
+		    check_converged(c, i, &nunconv, &first_unconv) < 0)
 			continue;
 		if (isnan(r[n].gratio) && !warned_gbar_c++)
 			rc__cs_warn(c, RC_CSTATS_WARN_MISSING,
@@ -437,6 +479,12 @@ rc__cs_validate(struct ctx *c, size_t *nrec)
 		n++;
 	}
 	rc__cs_check_errors(c);
+	if (nunconv)
+		rc__cs_warn(c, RC_CSTATS_WARN_UNCONVERGED, "%s: %zu row%s from "
+		    "unconverged solves (residual above tol) used as asked by "
+		    "--allow-unconverged; their a_r is not converged",
+		    rc__cs_where(c, first_unconv), nunconv, nunconv == 1 ? "" :
+		    "s");
 	*nrec = n;
 	return r;
 }

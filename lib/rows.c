@@ -33,19 +33,73 @@ rc_rows_free(rc_rowset *rs)
 	for (size_t i = 0; i < rs->ncols; i++)
 		free(rs->col[i]);
 	free(rs->col);
+	free(rs->colhash);
 	for (size_t i = 0; i < rs->nfiles; i++)
 		free(rs->file[i]);
 	free(rs->file);
 	memset(rs, 0, sizeof(*rs));
 }
 
+/* ---- the column index: names to column numbers in O(1), so that a table
+ * of many columns costs time linear in its size ---- */
+
+static size_t
+name_hash(const char *name, size_t len)
+{
+	size_t h = 14695981039346656037u;	/* FNV-1a */
+
+	for (size_t i = 0; i < len; i++)
+		h = (h ^ (unsigned char)name[i]) * 1099511628211u;
+	return h;
+}
+
+/* The slot of name in the index: its entry, or the empty slot where it
+ * would go. */
+static size_t *
+hash_slot(const rc_rowset *rs, const char *name, size_t len)
+{
+	size_t mask = rs->hashcap - 1, k = name_hash(name, len) & mask;
+
+	for (;; k = (k + 1) & mask) {
+		size_t e = rs->colhash[k];
+		if (e == 0 || (strlen(rs->col[e - 1]) == len &&
+		    memcmp(rs->col[e - 1], name, len) == 0))
+			return &rs->colhash[k];
+	}
+}
+
+/* (Re)build the index for the columns there are, at most half full. */
+static int
+hash_rebuild(rc_rowset *rs, size_t want)
+{
+	size_t cap = 64;
+
+	while (cap < 2 * want)
+		cap *= 2;
+	free(rs->colhash);
+	if ((rs->colhash = calloc(cap, sizeof(*rs->colhash))) == NULL) {
+		rs->hashcap = 0;
+		return -1;
+	}
+	rs->hashcap = cap;
+	for (size_t i = 0; i < rs->ncols; i++)
+		*hash_slot(rs, rs->col[i], strlen(rs->col[i])) = i + 1;
+	return 0;
+}
+
 int
 rc_rows_column(const rc_rowset *rs, const char *name)
 {
-	for (size_t i = 0; i < rs->ncols; i++)
-		if (strcmp(rs->col[i], name) == 0)
-			return (int)i;
-	return -1;
+	size_t *e;
+
+	if (rs->hashcap == 0) {	/* no index (it could not be rebuilt) */
+		for (size_t i = 0; i < rs->ncols; i++)
+			if (strcmp(rs->col[i], name) == 0)
+				return (int)i;
+		return -1;
+	}
+	e = hash_slot(rs, name, strlen(name));
+	return *e ? (int)(*e - 1) : -1;
 }
 
 const char *
@@ -83,17 +137,29 @@ parse_number(const char *s, double *v)
 static int
 column_add(rc_rowset *rs, const char *name, size_t len)
 {
-	for (size_t i = 0; i < rs->ncols; i++)
-		if (strlen(rs->col[i]) == len && memcmp(rs->col[i], name, len) == 0)
-			return (int)i;
+	size_t *e;
+
+	if ((2 * (rs->ncols + 1) > rs->hashcap &&
+	    hash_rebuild(rs, rs->ncols + 1) != 0))
+		return -1;
+	e = hash_slot(rs, name, len);
+	if (*e)
+		return (int)(*e - 1);
 	if (rs->ncols >= 100000)
 		return -1;
-	char **c = realloc(rs->col, (rs->ncols + 1) * sizeof(*c));
-	if (c == NULL)
+	/* col holds at least the power of two above ncols: grown to twice
+	 * ncols whenever ncols is a power of two (a failed parse may lower
+	 * ncols; that keeps this true) */
+	if ((rs->ncols & (rs->ncols - 1)) == 0 || rs->ncols == 0) {
+		char **c = realloc(rs->col, (rs->ncols ? 2 * rs->ncols : 1) *
+		    sizeof(*c));
+		if (c == NULL)
+			return -1;
+		rs->col = c;
+	}
+	if ((rs->col[rs->ncols] = strndup(name, len)) == NULL)
 		return -1;
-	rs->col = c;
-	if ((c[rs->ncols] = strndup(name, len)) == NULL)
-		return -1;
+	*e = rs->ncols + 1;
 	return (int)rs->ncols++;
 }
 
@@ -202,6 +268,7 @@ parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
 	const char *hdr = NULL;
 	size_t hdrlen = 0, nh = 0, pos = 0;
 	int *map = NULL;
+	size_t *seen = NULL;
 	long line = 0;
 	char msg[RC_ERRLEN];
 
@@ -230,7 +297,11 @@ parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
 			nf += s[i] == '\t';
 		if (hdr == NULL) {
 			free(map);
-			if ((map = calloc(nf, sizeof(*map))) == NULL)
+			free(seen);
+			/* seen[c]: the header field of column c, + 1 (duplicates
+			 * in linear time) */
+			if ((map = calloc(nf, sizeof(*map))) == NULL ||
+			    (seen = calloc(rs->ncols + nf, sizeof(*seen))) == NULL)
 				goto nomem;
 			size_t f = 0, a = 0;
 			for (size_t i = 0; i <= n; i++) {
@@ -251,13 +322,13 @@ parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
 				int c = column_add(rs, s + a, i - a);
 				if (c < 0)
 					goto nomem;
-				for (size_t k = 0; k < f; k++)
-					if (map[k] == c) {
-						snprintf(msg, sizeof(msg), "%s:%ld: header fields %zu "
-						    "and %zu: duplicate column name '%s'", name, line,
-						    k + 1, f + 1, rs->col[c]);
-						goto fail_msg;
-					}
+				if (seen[c] != 0) {
+					snprintf(msg, sizeof(msg), "%s:%ld: header fields %zu "
+					    "and %zu: duplicate column name '%s'", name, line,
+					    seen[c], f + 1, rs->col[c]);
+					goto fail_msg;
+				}
+				seen[c] = f + 1;
 				map[f++] = c;
 				a = i + 1;
 			}
@@ -287,14 +358,17 @@ parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
 		}
 	}
 	free(map);
+	free(seen);
 	if (hdr == NULL)
 		return rc_seterr(err, "%s: no header line (empty input)", name);
 	return 0;
 nomem:
 	free(map);
+	free(seen);
 	return rc_seterr(err, "%s:%ld: out of memory", name, line);
 fail_msg:
 	free(map);
+	free(seen);
 	return rc_seterr(err, "%s", msg);
 }
 
@@ -651,7 +725,10 @@ parse_json(rc_rowset *rs, const char *buf, size_t len, const char *name,
 		goto fail;
 	}
 	jws(&j);
-	j.pos++;		/* the '[' the caller saw */
+	/* One array, or several one after another (outputs joined with cat,
+	 * like TSV sections). */
+next_array:
+	j.pos++;		/* the '[' the caller or the loop saw */
 	jws(&j);
 	if (jpeek(&j) == ']')
 		j.pos++;
@@ -678,6 +755,8 @@ parse_json(rc_rowset *rs, const char *buf, size_t len, const char *name,
 			}
 		}
 	jws(&j);
+	if (jpeek(&j) == '[')
+		goto next_array;
 	if (j.pos < j.len) {
 		jfail(&j, "trailing data after the array");
 		goto fail;
@@ -720,6 +799,8 @@ rc_rows_parse(rc_rowset *rs, const char *buf, size_t len, const char *name,
 		row_drop_last(rs);
 	while (rs->ncols > ncols0)
 		free(rs->col[--rs->ncols]);
+	if (rs->hashcap > 0 && hash_rebuild(rs, rs->ncols) != 0)
+		rs->hashcap = 0;	/* lookups fall back to a scan */
 	return -1;
 }
 

@@ -14,7 +14,8 @@
  * blank lines and lines starting with '#' are skipped; a line equal to the
  * header (files joined with cat) starts a new section with that header.
  * JSON: detected by '[' as the first non-blank character; objects whose
- * values are strings, numbers, true/false (kept as text) or null.
+ * values are strings, numbers, true/false (kept as text) or null; several
+ * arrays one after another (files joined with cat) are read as one.
  */
 #ifndef RC_ROWS_H
 #define RC_ROWS_H
@@ -34,6 +35,9 @@ typedef struct rc_rowrec {
 typedef struct rc_rowset {
 	size_t ncols;
 	char **col;		/* union of the column names, first-seen order */
+	size_t *colhash;	/* open-addressing index of col: entry k + 1 for
+				 * column k, 0 empty; hashcap a power of two */
+	size_t hashcap;
 	size_t nrows, caprows;
 	rc_rowrec *row;
 	size_t nfiles;

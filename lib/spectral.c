@@ -133,11 +133,18 @@ int
 rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err)
 {
 	rc_fft own, *f;
-	double partial[NPART], n = (double)rc_grid_size(g);
+	double partial[NPART], n = (double)rc_grid_size(g), mmax = 0;
+	int e;
 
 	memset(&own, 0, sizeof(own));
 	if (transform(g, fft, &own, &f, err) != 0)
 		return -1;
+	/* The sum runs on moduli scaled by a power of two near the largest,
+	 * so that squares of heights near 1e150 do not overflow (nor those
+	 * near 1e-150 underflow); exact otherwise, results unchanged. */
+	for (size_t k = 0; k < g->ny * f->nxc; k++)
+		mmax = fmax(mmax, cabs(f->spec[k]));
+	e = mmax > 0 && isfinite(mmax) ? ilogb(mmax) : 0;
 	#pragma omp parallel for schedule(static)
 	for (long p = 0; p < NPART; p++) {
 		double acc = 0;
@@ -145,13 +152,13 @@ rc_rms_gradient(const rc_grid *g, rc_fft *fft, double *gbar, rc_err *err)
 			double qy = rc_deriv_wavenumber(j, g->ny, g->ly);
 			for (size_t i = 0; i < f->nxc; i++) {
 				double qx = rc_deriv_wavenumber(i, g->nx, g->lx);
-				double m = cabs(f->spec[j * f->nxc + i]);
+				double m = ldexp(cabs(f->spec[j * f->nxc + i]), -e);
 				acc += rc_fft_weight(i, g->nx) * (qx * qx + qy * qy) * m * m;
 			}
 		}
 		partial[p] = acc;
 	}
-	*gbar = sqrt(ordered_sum(partial)) / n;
+	*gbar = ldexp(sqrt(ordered_sum(partial)), e) / n;
 	rc_fft_free(&own);
 	return 0;
 }

@@ -187,9 +187,17 @@ double
 rc_gbar_fd(const rc_grid *g)
 {
 	size_t nx = g->nx, ny = g->ny;
-	double dx = g->lx / (double)nx, dy = g->ly / (double)ny, sum;
+	double dx = g->lx / (double)nx, dy = g->ly / (double)ny, sum, zmax = 0;
 	double part[NPART][16];
 	const double *h = g->z;
+	int e;
+
+	/* Differences scaled by a power of two near the largest height, so
+	 * that their squares neither overflow nor underflow (exact). */
+	for (size_t k = 0; k < nx * ny; k++)
+		if (isfinite(h[k]))
+			zmax = fmax(zmax, fabs(h[k]));
+	e = zmax > 0 ? ilogb(zmax) : 0;
 
 	#pragma omp parallel for schedule(static)
 	for (long p = 0; p < NPART; p++) {
@@ -198,15 +206,15 @@ rc_gbar_fd(const rc_grid *g)
 			size_t jp = (j + 1) % ny;
 			for (size_t i = 0; i < nx; i++) {
 				size_t ip = (i + 1) % nx;
-				double a = (h[j * nx + ip] - h[j * nx + i]) / dx;
-				double b = (h[jp * nx + i] - h[j * nx + i]) / dy;
+				double a = ldexp(h[j * nx + ip] - h[j * nx + i], -e) / dx;
+				double b = ldexp(h[jp * nx + i] - h[j * nx + i], -e) / dy;
 				acc += a * a + b * b;
 			}
 		}
 		part[p][0] = acc;
 	}
 	ordered_sums(part, 1, &sum);
-	return sqrt(sum / (double)(nx * ny));
+	return ldexp(sqrt(sum / (double)(nx * ny)), e);
 }
 
 size_t
@@ -295,8 +303,70 @@ rc_stats_compute(const rc_grid *g, const rc_grid *mask,
 	return rc_stats_compute_fft(g, mask, m, NULL, s, err);
 }
 
+/* Heights beyond 2^+-SCALE_EXP_MAX in magnitude are first scaled by a
+ * power of two: the statistics take fourth powers of heights and their
+ * derivatives, which overflow near 1e150 (and underflow near 1e-150).
+ * The scaling is exact, and every statistic is a power of the heights
+ * times a scale-free number, so it is undone exactly. */
+#define SCALE_EXP_MAX 100
+
+/* The exponent to scale g's heights by (0: none needed), and the scaled
+ * copy in *scaled (NULL when none is needed). */
+static int
+scaled_copy(const rc_grid *g, rc_grid **scaled, int *e, rc_err *err)
+{
+	size_t n = rc_grid_size(g);
+	double zmax = 0;
+
+	*scaled = NULL;
+	*e = 0;
+	for (size_t k = 0; k < n; k++)
+		if (isfinite(g->z[k]))
+			zmax = fmax(zmax, fabs(g->z[k]));
+	if (zmax == 0 || (ilogb(zmax) <= SCALE_EXP_MAX &&
+	    ilogb(zmax) >= -SCALE_EXP_MAX))
+		return 0;
+	*e = ilogb(zmax);
+	if ((*scaled = rc_grid_clone(g, 1, err)) == NULL)
+		return -1;
+	for (size_t k = 0; k < n; k++)
+		(*scaled)->z[k] = ldexp(g->z[k], -*e);
+	return 0;
+}
+
+static int stats_compute(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err);
+
 int
 rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err)
+{
+	rc_grid *scaled;
+	int e, rc;
+
+	if (scaled_copy(g, &scaled, &e, err) != 0)
+		return -1;
+	if (scaled == NULL)
+		return stats_compute(g, mask, m, fft, s, err);
+	rc = stats_compute(scaled, mask, m, fft, s, err);
+	rc_grid_free(scaled);
+	/* heights, gradients, Laplacians scale as h; the tensor M as h^2;
+	 * skewness, kurtosis, Nayak and the phi are scale-free */
+	s->mean = ldexp(s->mean, e);
+	s->hrms = ldexp(s->hrms, e);
+	s->hmin = ldexp(s->hmin, e);
+	s->hmax = ldexp(s->hmax, e);
+	s->gbar = ldexp(s->gbar, e);
+	s->gbar_prime = ldexp(s->gbar_prime, e);
+	s->rms_laplacian = ldexp(s->rms_laplacian, e);
+	s->mxx = ldexp(s->mxx, 2 * e);
+	s->myy = ldexp(s->myy, 2 * e);
+	s->mxy = ldexp(s->mxy, 2 * e);
+	return rc;
+}
+
+static int
+stats_compute(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err)
 {
 	size_t n = rc_grid_size(g), count = n;
@@ -444,8 +514,38 @@ rc_stats_by_height(const rc_grid *g, const rc_grid *mask,
 	return rc_stats_by_height_fft(g, mask, m, NULL, nbins, bins, err);
 }
 
+static int by_height(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, size_t nbins, rc_height_bin *bins,
+    rc_err *err);
+
 int
 rc_stats_by_height_fft(const rc_grid *g, const rc_grid *mask,
+    enum rc_deriv_method m, rc_fft *fft, size_t nbins, rc_height_bin *bins,
+    rc_err *err)
+{
+	rc_grid *scaled;
+	int e, rc;
+
+	if (scaled_copy(g, &scaled, &e, err) != 0)
+		return -1;
+	if (scaled == NULL)
+		return by_height(g, mask, m, fft, nbins, bins, err);
+	rc = by_height(scaled, mask, m, fft, nbins, bins, err);
+	rc_grid_free(scaled);
+	for (size_t b = 0; rc == 0 && b < nbins; b++) {
+		bins[b].h_lo = ldexp(bins[b].h_lo, e);
+		bins[b].h_hi = ldexp(bins[b].h_hi, e);
+		bins[b].h_mid = ldexp(bins[b].h_mid, e);
+		bins[b].gbar = ldexp(bins[b].gbar, e);
+		bins[b].mxx = ldexp(bins[b].mxx, 2 * e);
+		bins[b].myy = ldexp(bins[b].myy, 2 * e);
+		bins[b].mxy = ldexp(bins[b].mxy, 2 * e);
+	}
+	return rc;
+}
+
+static int
+by_height(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft, size_t nbins, rc_height_bin *bins,
     rc_err *err)
 {

@@ -413,7 +413,10 @@ harmonic_rows(const rc_synth_params *p, double *z, size_t j0, size_t rows)
 			double dx = periodic_offset(p->lx * (double)i / (double)p->nx,
 			    p->lx);
 			double r = hypot(dx, dy);
-			z[(size_t)jy * p->nx + i] = -(r0 / n) * pow(r / r0, n);
+			/* -(r0/n) (r/r0)^n as -r^n r0^(1-n)/n in logarithms:
+			 * r/r0 overflows for a tiny r0 long before z does */
+			z[(size_t)jy * p->nx + i] = r == 0 ? 0 :
+			    -exp(n * log(r) + (1 - n) * log(r0)) / n;
 		}
 	}
 }
@@ -562,6 +565,7 @@ rc_synth_planned(const rc_synth_params *p, enum rc_fft_effort effort,
 {
 	rc_grid *g;
 	double scale = 1;
+	size_t bad;
 
 	if (plan_seconds != NULL)
 		*plan_seconds = 0;
@@ -589,6 +593,13 @@ rc_synth_planned(const rc_synth_params *p, enum rc_fft_effort effort,
 	}
 	if (p->type != RC_SURF_SELFAFFINE && normalise(p, g, &scale, err) != 0)
 		goto fail;
+	if (!rc_grid_all_finite(g, &bad)) {
+		rc_seterr(err, "%s surface: the height at i=%zu, j=%zu is not finite "
+		    "(it overflows: %s)", rc_surface_type_name(p->type), bad % p->nx,
+		    bad / p->nx, p->type == RC_SURF_HARMONIC ? "a larger --radius "
+		    "or a smaller --exponent" : "smaller amplitudes or lengths");
+		goto fail;
+	}
 	if (write_meta(p, g, scale, err) != 0)
 		goto fail;
 	return g;

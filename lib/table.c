@@ -1,6 +1,7 @@
 /* table.c - TSV/JSON result rows. */
 #include "table.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,15 +100,35 @@ row_has(const rc_row *r, const char *name)
 	return 0;
 }
 
+/* A finite number by JSON's grammar:
+ * -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)? (strtod also takes
+ * "Infinity", "+5", "0x10", " 5", which JSON does not). */
 static int
-is_number(const char *s)
+is_json_number(const char *text)
 {
-	char *end;
+	const char *s = text;
 
-	if (*s == '\0')
-		return 0;
-	(void)strtod(s, &end);
-	return *end == '\0';
+#define DIGITS(p) do { if (!isdigit((unsigned char)*(p))) return 0; \
+	while (isdigit((unsigned char)*(p))) (p)++; } while (0)
+	if (*s == '-')
+		s++;
+	if (*s == '0')
+		s++;
+	else
+		DIGITS(s);
+	if (*s == '.') {
+		s++;
+		DIGITS(s);
+	}
+	if (*s == 'e' || *s == 'E') {
+		s++;
+		if (*s == '+' || *s == '-')
+			s++;
+		DIGITS(s);
+	}
+#undef DIGITS
+	/* 1e999 is grammatical but no double: a string, like Infinity */
+	return *s == '\0' && isfinite(strtod(text, NULL));
 }
 
 int
@@ -117,7 +138,7 @@ rc_row_meta(rc_row *r, const rc_grid *g)
 		if (row_has(r, g->meta[i].key))
 			continue;
 		if (row_add(r, g->meta[i].key, g->meta[i].val,
-		    !is_number(g->meta[i].val)) != 0)
+		    !is_json_number(g->meta[i].val)) != 0)
 			return -1;
 	}
 	return 0;
@@ -131,20 +152,60 @@ rc_table_begin(rc_table_out *t, FILE *fp, int json)
 	t->json = json;
 }
 
-static void
-json_string(FILE *fp, const char *s)
+/* Length of the well-formed UTF-8 sequence at s (RFC 3629: no overlong
+ * forms, no surrogates, at most U+10FFFF), 0 if there is none. */
+static size_t
+utf8_len(const unsigned char *s)
 {
+	unsigned char c = s[0];
+	size_t n;
+	unsigned lo = 0x80, hi = 0xbf;
+
+	if (c < 0x80)
+		return 1;
+	if (c >= 0xc2 && c <= 0xdf)
+		n = 2;
+	else if (c >= 0xe0 && c <= 0xef) {
+		n = 3;
+		lo = c == 0xe0 ? 0xa0 : 0x80;
+		hi = c == 0xed ? 0x9f : 0xbf;
+	} else if (c >= 0xf0 && c <= 0xf4) {
+		n = 4;
+		lo = c == 0xf0 ? 0x90 : 0x80;
+		hi = c == 0xf4 ? 0x8f : 0xbf;
+	} else
+		return 0;
+	if (s[1] < lo || s[1] > hi)
+		return 0;
+	for (size_t k = 2; k < n; k++)
+		if (s[k] < 0x80 || s[k] > 0xbf)
+			return 0;
+	return n;
+}
+
+/* A JSON string: quotes, backslashes and control characters escaped, a
+ * byte that is not UTF-8 written as U+FFFD (JSON text is Unicode). */
+static void
+json_string(FILE *fp, const char *str)
+{
+	const unsigned char *s = (const unsigned char *)str;
+
 	fputc('"', fp);
-	for (; *s; s++) {
-		unsigned char c = (unsigned char)*s;
-		if (c == '"' || c == '\\')
-			fprintf(fp, "\\%c", c);
-		else if (c == '\t')
+	while (*s) {
+		size_t n = utf8_len(s);
+		if (*s == '"' || *s == '\\')
+			fprintf(fp, "\\%c", *s);
+		else if (*s == '\t')
 			fputs("\\t", fp);
-		else if (c < 0x20)
-			fprintf(fp, "\\u%04x", c);
+		else if (*s == '\n')
+			fputs("\\n", fp);
+		else if (*s < 0x20 || *s == 0x7f)
+			fprintf(fp, "\\u%04x", *s);
+		else if (n == 0)
+			fputs("\\ufffd", fp);
 		else
-			fputc(c, fp);
+			fwrite(s, 1, n, fp);
+		s += n ? n : 1;
 	}
 	fputc('"', fp);
 }
@@ -195,14 +256,16 @@ rc_table_write(rc_table_out *t, const rc_row *r, rc_err *err)
 				fputs(", ", t->fp);
 			json_string(t->fp, r->name[i]);
 			fputs(": ", t->fp);
-			if (r->is_str[i])
-				json_string(t->fp, r->val[i]);
-			else if (strcmp(r->val[i], "nan") == 0 ||
+			/* JSON has no NaN or infinity: null; any other text a
+			 * JSON number does not spell is a string. */
+			if (!r->is_str[i] && (strcmp(r->val[i], "nan") == 0 ||
 			    strcmp(r->val[i], "inf") == 0 ||
-			    strcmp(r->val[i], "-inf") == 0)
+			    strcmp(r->val[i], "-inf") == 0))
 				fputs("null", t->fp);
-			else
+			else if (!r->is_str[i] && is_json_number(r->val[i]))
 				fputs(r->val[i], t->fp);
+			else
+				json_string(t->fp, r->val[i]);
 		}
 		fputc('}', t->fp);
 	} else {

@@ -4,7 +4,9 @@
  * row fixes the columns; later rows must have the same names in the same
  * order.  TSV: tab-separated, one header line, numbers in the shortest form
  * that reads back exactly, NaN as "nan".  JSON: an array of objects, NaN
- * as null.
+ * and infinities as null, metadata that is not a JSON number (Infinity,
+ * +5, 0x10) as a string, control characters escaped and bytes that are
+ * not UTF-8 as U+FFFD: always valid JSON (RFC 8259).
  */
 #ifndef RC_TABLE_H
 #define RC_TABLE_H

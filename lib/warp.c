@@ -51,11 +51,14 @@ rc_warp_height(double h, double w, double hmin, double hmax)
 int
 rc_warp(rc_grid *g, double w, double hmin, double hmax, rc_err *err)
 {
-	size_t n = rc_grid_size(g);
+	size_t n = rc_grid_size(g), k_bad;
 	double lo, hi;
 
 	if (!isfinite(w) || !isfinite(hmin) || !isfinite(hmax))
 		return rc_seterr(err, "warp: w, hmin and hmax must be finite");
+	if (!isfinite(hmax - hmin))
+		return rc_seterr(err, "warp: hmax - hmin = %g - (%g) overflows; "
+		    "give bounds closer together", hmax, hmin);
 	min_max(g, &lo, &hi);
 	if (hmin > lo)
 		return rc_seterr(err, "warp: hmin %.17g is above the lowest height %.17g",
@@ -67,6 +70,10 @@ rc_warp(rc_grid *g, double w, double hmin, double hmax, rc_err *err)
 		#pragma omp parallel for
 		for (size_t k = 0; k < n; k++)
 			g->z[k] = rc_warp_height(g->z[k], w, hmin, hmax);
+		if (!rc_grid_all_finite(g, &k_bad))
+			return rc_seterr(err, "warp: w = %g with hmin %g, hmax %g gives "
+			    "a non-finite height at i=%zu, j=%zu", w, hmin, hmax,
+			    k_bad % g->nx, k_bad / g->nx);
 	}
 	if (rc_grid_meta_setd(g, "warp", w, err) != 0 ||
 	    rc_grid_meta_setd(g, "warp_hmin", hmin, err) != 0 ||
@@ -247,12 +254,17 @@ rc_carve_rough(rc_grid *g, const rc_grid *mask, double depth, double width,
 		gsl_rng_set(rng, seed);
 	}
 	for (size_t k = 0; k < n; k++) {
-		double ramp = -expm1(-d2[k] / (2 * width * width));
+		/* (d/W)^2, not d^2/W^2: a tiny W must not make 0/0 */
+		double x = sqrt(d2[k]) / width;
+		double ramp = -expm1(-0.5 * x * x);
 		double rough = rng ? roughness * fabs(gsl_ran_gaussian_ziggurat(rng, 1.0)) : 0;
 		g->z[k] -= (depth + rough) * ramp;
 	}
 	gsl_rng_free(rng);
 	free(d2);
+	if (!rc_grid_all_finite(g, &n))
+		return rc_seterr(err, "carve: depth %g (roughness %g) overflows the "
+		    "height at i=%zu, j=%zu", depth, roughness, n % g->nx, n / g->nx);
 	if (rc_grid_meta_setd(g, "carve_depth", depth, err) != 0 ||
 	    rc_grid_meta_setd(g, "carve_width", width, err) != 0)
 		return -1;

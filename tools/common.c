@@ -1,6 +1,7 @@
 /* common.c - shared tool plumbing (see common.h). */
 #include "common.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -11,6 +12,9 @@
 #include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "atomic.h"
 #include "fft.h"
@@ -42,20 +46,28 @@ tool_on_signal(int sig)
 	raise(sig);
 }
 
+/* A standard descriptor left closed (2>&-) would be the next file opened,
+ * and messages for stderr would land in that file, a result table
+ * perhaps: each closed one is held by /dev/null, opened so that it fails
+ * as the closed one did, except stderr (its messages just vanish). */
+static void
+hold_closed_stdio(void)
+{
+	static const int mode[3] = { O_WRONLY, O_RDONLY, O_WRONLY };
+
+	for (int fd = 0; fd < 3; fd++)
+		if (fcntl(fd, F_GETFD) < 0 && errno == EBADF &&
+		    open("/dev/null", mode[fd]) != fd)
+			_exit(1);	/* nowhere safe to write: no message */
+}
+
 void
 tool_init(struct tool *t, const char *name, int argc, char **argv)
 {
 	static const int sigs[] = { SIGINT, SIGTERM, SIGHUP };
 	size_t len = 1;
 
-	/* A closed standard descriptor would be taken by the next file opened
-	 * (an output), and messages to stderr would land in it: hold each
-	 * with /dev/null, read-only for stdin and stdout, so that a table to
-	 * a closed stdout still fails (EBADF) instead of vanishing. */
-	for (int fd = 0; fd <= 2; fd++)
-		if (fcntl(fd, F_GETFD) < 0 && errno == EBADF &&
-		    open("/dev/null", fd == 2 ? O_WRONLY : O_RDONLY) != fd)
-			exit(125);
+	hold_closed_stdio();
 	signal_name = name;
 	for (size_t k = 0; k < sizeof(sigs) / sizeof(sigs[0]); k++) {
 		struct sigaction sa, old;
@@ -118,6 +130,19 @@ tool_fail(const struct tool *t, const char *fmt, ...)
 }
 
 void
+tool_fail_at(const struct tool *t, const char *what, const char *why)
+{
+	size_t n;
+
+	if (what == NULL)	/* an output left to standard output */
+		what = "standard output";
+	n = strlen(what);
+	if (strncmp(why, what, n) == 0 && strncmp(why + n, ": ", 2) == 0)
+		tool_fail(t, "%s", why);
+	tool_fail(t, "%s: %s", what, why);
+}
+
+void
 tool_bad(struct tool *t, const char *fmt, ...)
 {
 	va_list ap;
@@ -126,6 +151,57 @@ tool_bad(struct tool *t, const char *fmt, ...)
 	vmsg(t, fmt, ap);
 	va_end(ap);
 	t->nbad++;
+}
+
+void
+tool_bad_option(struct tool *t, const char *optstring,
+    const struct option *longopts, char **argv)
+{
+	/* getopt_long leaves optind past a long option, but inside a group
+	 * of short ones ("-qx") it may still point at the group: a long
+	 * option is recognised by its name matching the option code. */
+	const char *arg = optind > 0 ? argv[optind - 1] : NULL;
+	const struct option *lo = NULL;
+	size_t len = 0;
+
+	if (arg != NULL && strncmp(arg, "--", 2) == 0 && arg[2] != '\0') {
+		len = strcspn(arg + 2, "=");
+		if (optopt == 0) {
+			char names[256] = "";
+			int nmatch = 0;
+			/* an abbreviation of several: name them */
+			for (lo = longopts; lo != NULL && lo->name != NULL; lo++)
+				if (len > 0 && strncmp(lo->name, arg + 2, len) == 0 &&
+				    nmatch++ < 4) {
+					size_t used = strlen(names);
+					snprintf(names + used, sizeof(names) - used, "%s--%s",
+					    used ? ", " : "", lo->name);
+				}
+			if (nmatch > 1)
+				tool_bad(t, "--%.*s: ambiguous: %s%s", (int)len, arg + 2,
+				    names, nmatch > 4 ? ", ..." : "");
+			else
+				tool_bad(t, "--%.*s: unknown option", (int)len, arg + 2);
+			return;
+		}
+		for (lo = longopts; lo != NULL && lo->name != NULL; lo++)
+			if (lo->flag == NULL && lo->val == optopt &&
+			    strncmp(lo->name, arg + 2, len) == 0)
+				break;
+	}
+	if (lo != NULL && lo->name != NULL) {
+		if (lo->has_arg == no_argument)
+			tool_bad(t, "--%s: takes no value (given '%s')", lo->name,
+			    arg[2 + len] == '=' ? arg + 3 + len : "");
+		else
+			tool_bad(t, "--%s: needs a value", lo->name);
+	} else if (optopt > 0 && optopt < 128 && isgraph(optopt) &&
+	    optopt != ':' && strchr(optstring, optopt) != NULL)
+		tool_bad(t, "-%c: needs a value", optopt);
+	else if (optopt > 0 && optopt < 128 && isgraph(optopt))
+		tool_bad(t, "-%c: unknown option", optopt);
+	else
+		tool_bad(t, "%s: unknown option", arg != NULL ? arg : "?");
 }
 
 /* What identifies a file: device and inode of an existing one, else of
@@ -301,6 +377,16 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 				tool_bad(t, "-j %s: threads must be 1 to 4096", arg);
 			else
 				t->threads = (int)n;
+#ifdef _OPENMP
+			/* More threads than cores only contend (-j 4096 made a
+			 * 64^2 solve take 38 s): clamped, with a note. */
+			if (t->threads > omp_get_num_procs()) {
+				t->threads = omp_get_num_procs();
+				tool_warn(t, "-j %s: more threads than the %d core%s "
+				    "available; using %d", arg, t->threads,
+				    t->threads == 1 ? "" : "s", t->threads);
+			}
+#endif
 		}
 		return 1;
 	case 'L':
@@ -375,7 +461,7 @@ tool_fft_setup(struct tool *t)
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;
 	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)
-		tool_fail(t, "%s: %s", t->wisdom, err.msg);
+		tool_fail_at(t, t->wisdom, err.msg);
 }
 
 enum rc_fft_effort
@@ -542,7 +628,7 @@ read_grid(const struct tool *t, const char *path, const char *channel)
 		tool_fail(t, "standard input: is a terminal; give a file or a pipe");
 	g = rc_grid_read(path, &o, &err);
 	if (g == NULL)
-		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
+		tool_fail_at(t, rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
 	if (g->valid != NULL && !t->accept_missing)
 		tool_fail(t, "%s: %zu of %zu points are missing (NaN); %s needs "
@@ -672,9 +758,17 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 	if (rc_is_stdio(path) && fmt != RC_FMT_TXT && isatty(STDOUT_FILENO))
 		tool_fail(t, "standard output is a terminal; refusing to write binary "
 		    "data there (use -o FILE or a pipe)");
+	/* No NaN or infinity leaves a tool (but at missing points, which
+	 * are NaN by convention): a result that overflowed is an error. */
+	for (size_t k = 0; k < rc_grid_size(g); k++)
+		if (!isfinite(g->z[k]) && (g->valid == NULL || g->valid[k]))
+			tool_fail(t, "%s: the result's value at i=%zu, j=%zu is %s; "
+			    "not written (the options overflow on this input)",
+			    rc_is_stdio(path) ? "standard output" : path, k % g->nx,
+			    k / g->nx, isnan(g->z[k]) ? "NaN" : "infinite");
 	if (rc_grid_history_add(g, t->cmdline, &err) != 0 ||
 	    rc_grid_write(g, path, (enum rc_format)fmt, &err) != 0)
-		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard output" : path,
+		tool_fail_at(t, rc_is_stdio(path) ? "standard output" : path,
 		    err.msg);
 	/* The history line belongs to this output only. */
 	free(g->history[--g->nhistory]);

@@ -9,6 +9,7 @@
 #ifndef RC_TOOLS_COMMON_H
 #define RC_TOOLS_COMMON_H
 
+#include <getopt.h>
 #include <stddef.h>
 #include <stdio.h>
 #include "fft.h"
@@ -41,7 +42,7 @@ struct tool {
 	const char *out;	/* -o FILE, NULL for standard output */
 	const char *png;	/* --png FILE */
 	int quiet;		/* -q */
-	int threads;		/* -j N, 0 = all cores */
+	int threads;		/* -j N (at most the cores), 0 = all cores */
 	int json;		/* --json */
 	int pretty;		/* --pretty: aligned table even when not a terminal */
 	double lx, ly;		/* -L, cell size for inputs that have none */
@@ -104,9 +105,20 @@ void tool_warn(const struct tool *t, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
 void tool_fail(const struct tool *t, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3), noreturn));
+/* tool_fail with "tool: what: why"; "what: " is left out when why, a
+ * library message, starts with it already (most name their file); what
+ * NULL is "standard output" (an output path not given). */
+void tool_fail_at(const struct tool *t, const char *what, const char *why)
+	__attribute__((noreturn));
 /* Report a usage problem; parsing goes on so all are reported at once. */
 void tool_bad(struct tool *t, const char *fmt, ...)
 	__attribute__((format(printf, 2, 3)));
+/* After getopt_long returned '?' (with opterr = 0): report, with tool_bad,
+ * the option as the user typed it and what is wrong with it: unknown (or
+ * an ambiguous abbreviation), lacking its value, or given a value it does
+ * not take.  optstring and longopts are the ones given to getopt_long. */
+void tool_bad_option(struct tool *t, const char *optstring,
+    const struct option *longopts, char **argv);
 /* After validation: check the declared files against each other (below);
  * if any problem was reported, hint at --help, exit 2. */
 void tool_usage_check(struct tool *t);

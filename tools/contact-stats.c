@@ -30,6 +30,7 @@ enum {
 	OPT_THERMO,
 	OPT_ALPHA_T,
 	OPT_LENIENT,
+	OPT_ALLOW_UNCONVERGED,
 	OPT_GNUPLOT,
 	OPT_SCHEDULE,
 	OPT_EPS_REF,
@@ -68,6 +69,8 @@ usage(void)
 "  --thermo            extrapolate eps_t = lambda_r/lx -> 0\n"
 "  --alpha-t K|auto    exponent of the eps_t correction (default 1)\n"
 "  --lenient           skip bad rows and groups, with a warning count\n"
+"  --allow-unconverged use rows whose residual exceeds their tol (refused\n"
+"                      by default), with a warning\n"
 "  --gnuplot FILE      write a gnuplot script plotting kappa vs p* to a PNG\n"
 "  --png FILE          run that script through gnuplot, writing FILE\n"
 "  --schedule          print eps(p) = eps_ref (p/p_ref)^(1/4) (Eq. 27)\n"
@@ -152,6 +155,7 @@ parse(int argc, char **argv, struct opts *o)
 		{ "thermo", no_argument, NULL, OPT_THERMO },
 		{ "alpha-t", required_argument, NULL, OPT_ALPHA_T },
 		{ "lenient", no_argument, NULL, OPT_LENIENT },
+		{ "allow-unconverged", no_argument, NULL, OPT_ALLOW_UNCONVERGED },
 		{ "gnuplot", required_argument, NULL, OPT_GNUPLOT },
 		{ "schedule", no_argument, NULL, OPT_SCHEDULE },
 		{ "eps-ref", required_argument, NULL, OPT_EPS_REF },
@@ -212,6 +216,7 @@ parse(int argc, char **argv, struct opts *o)
 		case OPT_FRACTAL: cs->fractal = 1; break;
 		case OPT_THERMO: cs->thermo = 1; break;
 		case OPT_LENIENT: cs->lenient = 1; break;
+		case OPT_ALLOW_UNCONVERGED: cs->allow_unconverged = 1; break;
 		case OPT_SCHEDULE: o->schedule = 1; break;
 		case OPT_GNUPLOT: o->gnuplot = optarg; break;
 		case OPT_ALPHA_F:
@@ -229,16 +234,7 @@ parse(int argc, char **argv, struct opts *o)
 			o->have_p_ref = 1;
 			break;
 		case '?':
-			/* optopt: the option whose argument is missing (a letter or
-			 * a long option's code), 0 for an unknown long one */
-			if (optopt > 0 && optopt < 128 && strchr(optstring, optopt))
-				tool_bad(&t, "-%c: missing argument", optopt);
-			else if (optopt > 0 && optopt < 128)
-				tool_bad(&t, "-%c: unknown option", optopt);
-			else if (optopt != 0)
-				tool_bad(&t, "%s: missing argument", argv[optind - 1]);
-			else
-				tool_bad(&t, "%s: unknown option", argv[optind - 1]);
+			tool_bad_option(&t, optstring, longopts, argv);
 			break;
 		default:
 			tool_common_option(&t, c, optarg);

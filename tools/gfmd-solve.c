@@ -289,7 +289,7 @@ main(int argc, char **argv)
 		/* Options that decide the rows default to the checkpoint's;
 		 * those given must match it (rc_checkpoint_match below). */
 		if (rc_checkpoint_read(&saved, &saved_u, o.resume_path, &err) != 0)
-			tool_fail(&t, "%s: %s", o.resume_path, err.msg);
+			tool_fail_at(&t, o.resume_path, err.msg);
 		if (!o.given_method && (method = rc_method_parse(saved.method)) >= 0)
 			o.so.method = (enum rc_method)method;
 		if (!o.given_tol)
@@ -354,6 +354,15 @@ main(int argc, char **argv)
 	else if (rc_fft_init(&fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &fft, &gbar, &err) != 0)
 		tool_fail(&t, "%s", err.msg);
+	{
+		double lo = INFINITY, hi = -INFINITY;
+
+		for (size_t k = 0; k < rc_grid_size(h); k++) {
+			lo = fmin(lo, h->z[k]);
+			hi = fmax(hi, h->z[k]);
+		}
+		gfmd_check_scale(&t, input, hi - lo, gbar);
+	}
 	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
@@ -382,7 +391,7 @@ main(int argc, char **argv)
 			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    u->nx, u->ny, h->nx, h->ny);
 		if (rc_solver_set_displacement(solver, u->z, &err) != 0)
-			tool_fail(&t, "%s: %s", o.init, err.msg);
+			tool_fail_at(&t, o.init, err.msg);
 		rc_grid_free(u);
 	}
 	if (o.resume_path != NULL) {
@@ -401,7 +410,7 @@ main(int argc, char **argv)
 	sigaction(SIGTERM, &sa, NULL);
 
 	if (rc_atomic_open(&out, t.out, &err) != 0)
-		tool_fail(&t, "%s: %s", t.out, err.msg);
+		tool_fail_at(&t, t.out, err.msg);
 	tool_table_begin(&t, &table, out.fp);
 	rc_row_init(&row);
 	rc_contact_defaults(&co);
@@ -420,7 +429,7 @@ main(int argc, char **argv)
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
-			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 		}
 	}
 	if (o.resume_path != NULL && first >= npressures) {
@@ -541,12 +550,18 @@ main(int argc, char **argv)
 			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
+			    .tol = o.so.tol,
 			    .seconds = res.seconds, .plan_seconds = plan_seconds,
 			    .method = rc_method_name(o.so.method),
 			    .boundary = rc_boundary_name(o.so.boundary),
 			    .approach = rc_solver_approach(solver), .indenter = h,
 			    .nx = h->nx, .ny = h->ny };
 
+			const char *why = gfmd_kappa_c_why(&in);
+
+			if (why != NULL)
+				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
+				    why);
 			if (gfmd_result_row(&row, &in) != 0) {
 				rc_atomic_abort(&out);
 				tool_fail(&t, "out of memory");
@@ -554,7 +569,7 @@ main(int argc, char **argv)
 		}
 		if (rc_table_write(&table, &row, &err) != 0) {
 			rc_atomic_abort(&out);
-			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 		}
 		if (fflush(out.fp) != 0) {
 			rc_atomic_abort(&out);
@@ -621,7 +636,7 @@ main(int argc, char **argv)
 	sigaction(SIGTERM, &sa, NULL);
 	if (rc_table_end(&table, &err) != 0 || rc_atomic_commit(&out, &err) != 0) {
 		rc_atomic_abort(&out);
-		tool_fail(&t, "%s: %s", t.out ? t.out : "standard output", err.msg);
+		tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
 	}
 	if (!o.fd)
 		rc_fft_free(&fft);
@@ -678,7 +693,7 @@ main(int argc, char **argv)
 				po.overlay = g;
 				po.caption = caption;
 				if (rc_png_write(h, t.png, &po, &err) != 0)
-					tool_fail(&t, "%s: %s", t.png, err.msg);
+					tool_fail_at(&t, t.png, err.msg);
 			}
 			rc_grid_free(g);
 		}

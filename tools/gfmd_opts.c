@@ -1,6 +1,7 @@
 /* gfmd_opts.c - gfmd-solve's options (see gfmd_opts.h). */
 #include "gfmd_opts.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,6 +48,13 @@ pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
 			return;
 		}
 }
+
+/* Every long option either build may take, for naming a bad one. */
+static const struct option all_longopts[] = {
+	GFMD_LONGOPTS,
+	TOOL_FFT_LONGOPTS,
+	{ NULL, 0, NULL, 0 }
+};
 
 void
 gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
@@ -130,16 +138,7 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->resume_path = arg;
 		break;
 	case '?':
-		/* optopt: the option whose argument is missing (a long
-		 * option's code, or a letter), 0 for an unknown long one. */
-		if (optopt > 0 && optopt < 128 && strchr(GFMD_OPTSTRING, optopt))
-			tool_bad(t, "-%c: missing argument", optopt);
-		else if (optopt > 0 && optopt < 128)
-			tool_bad(t, "-%c: unknown option", optopt);
-		else if (optopt != 0)
-			tool_bad(t, "%s: missing argument", argv[optind - 1]);
-		else
-			tool_bad(t, "%s: unknown option", argv[optind - 1]);
+		tool_bad_option(t, GFMD_OPTSTRING, all_longopts, argv);
 		break;
 	default:
 		tool_common_option(t, c, arg);
@@ -197,4 +196,28 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	if (o->resume_path != NULL)
 		tool_input(t, "--resume", o->resume_path);
 	tool_may_replace(t, "--checkpoint", "--resume");
+}
+
+void
+gfmd_check_scale(const struct tool *t, const char *input, double range,
+    double gbar)
+{
+	const char *in = input == NULL || rc_is_stdio(input) ?
+	    "standard input" : input;
+	int bad_range = range != 0 && !isnan(range) &&
+	    !(range >= GFMD_SCALE_MIN && range <= GFMD_SCALE_MAX);
+	int bad_gbar = gbar != 0 &&
+	    !(gbar >= GFMD_SCALE_MIN && gbar <= GFMD_SCALE_MAX);
+
+	if (!bad_range && !bad_gbar)
+		return;
+	if (isnan(range))
+		tool_fail(t, "%s: rms gradient %g: outside [%g, %g], where the "
+		    "solve would overflow or underflow; rescale the surface (e.g. "
+		    "surfwarp --rms-gradient 1)", in, gbar, GFMD_SCALE_MIN,
+		    GFMD_SCALE_MAX);
+	tool_fail(t, "%s: heights spanning %g with rms gradient %g: outside "
+	    "[%g, %g], where the solve would overflow or underflow; rescale the "
+	    "surface (e.g. surfwarp --rms-gradient 1)", in, range, gbar,
+	    GFMD_SCALE_MIN, GFMD_SCALE_MAX);
 }

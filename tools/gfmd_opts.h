@@ -85,4 +85,14 @@ void gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 /* The checks between options and on the operands argv[optind..argc-1]. */
 void gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv);
 
+/* Refuse (exit 1, naming the input) an indenter whose height range or rms
+ * gradient gbar lies outside [GFMD_SCALE_MIN, GFMD_SCALE_MAX]: the solver
+ * squares gradients and multiplies pressures by displacements, which
+ * overflow or underflow there (a p = inf would be blamed on the pressure).
+ * range NaN: not known (skipped); 0 (flat) and gbar 0 are fine. */
+#define GFMD_SCALE_MIN 1e-100
+#define GFMD_SCALE_MAX 1e100
+void gfmd_check_scale(const struct tool *t, const char *input, double range,
+    double gbar);
+
 #endif

@@ -1,6 +1,8 @@
 /* gfmd_row.c - gfmd-solve's result row (see gfmd_row.h). */
 #include "gfmd_row.h"
 
+#include <math.h>
+
 int
 gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 {
@@ -26,6 +28,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "patch_size_char", st->patch_size_char) ||
 	    rc_row_int(row, "iterations", in->iterations) ||
 	    rc_row_num(row, "residual", in->residual) ||
+	    rc_row_num(row, "tol", in->tol) ||
 	    rc_row_num(row, "seconds", in->seconds) ||
 	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
 	    rc_row_str(row, "method", in->method) ||
@@ -37,4 +40,20 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_meta(row, in->indenter))
 		return -1;
 	return 0;
+}
+
+const char *
+gfmd_kappa_c_why(const struct gfmd_row *in)
+{
+	const rc_contact_stats *st = in->stats;
+
+	if (!isnan(st->kappa_c))
+		return NULL;
+	if (st->n_c == 0)
+		return "no point is in contact, so gbar_c is undefined";
+	if (!(st->gbar_c > 0))
+		return "the rms gradient over the contact, gbar_c, is 0 (a contact "
+		    "only where the indenter is flat, e.g. at the apex of a "
+		    "harmonic indenter), so p*_c = p/(E* gbar_c) is undefined";
+	return "a_r or p*_c is outside the range of Eq. 8";
 }

@@ -13,7 +13,8 @@ struct gfmd_row {
 	const rc_contact_stats *stats;
 	double mean_gap, elastic_energy;
 	long iterations;
-	double residual, seconds, plan_seconds;
+	double residual, tol;		/* reached, and asked for */
+	double seconds, plan_seconds;
 	const char *method;
 	const char *boundary;		/* "periodic" or "free" */
 	double approach;		/* rc_solver_approach */
@@ -23,5 +24,8 @@ struct gfmd_row {
 
 /* Fill row (cleared first); 0, or -1 when out of memory. */
 int gfmd_result_row(rc_row *row, const struct gfmd_row *in);
+/* The reason (a static string) why kappa_c, written as nan, cannot be
+ * computed for this row, or NULL when it is a number. */
+const char *gfmd_kappa_c_why(const struct gfmd_row *in);
 
 #endif

@@ -127,11 +127,7 @@ main(int argc, char **argv)
 		if ((opt != 'L' && tool_common_option(&t, opt, optarg)) ||
 		    surfgen_option(&t, &o, opt, optarg))
 			continue;
-		if (optopt != 0 && strchr("nLHoj", optopt) != NULL)
-			tool_bad(&t, "-%c: needs a value", optopt);
-		else
-			tool_bad(&t, "%s: unknown option or missing value",
-			    argv[optind - 1]);
+		tool_bad_option(&t, "hn:L:H:o:j:q", longopts, argv);
 	}
 	if (optind < argc)
 		tool_bad(&t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
@@ -195,7 +191,7 @@ main(int argc, char **argv)
 		    seconds - plan_seconds);
 	tool_fft_finish(&t);
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
-		tool_fail(&t, "%s: %s", t.png, err.msg);
+		tool_fail_at(&t, t.png, err.msg);
 	tool_write_grid(&t, g, t.out);
 	rc_grid_free(g);
 	return tool_exit(&t, 0);

@@ -134,7 +134,7 @@ out_open(const struct tool *t, struct out *o)
 	rc_err err;
 
 	if (rc_atomic_open(&o->file, t->out, &err) != 0)
-		tool_fail(t, "%s: %s", t->out, err.msg);
+		tool_fail_at(t, t->out, err.msg);
 	tool_table_begin(t, &o->table, o->file.fp);
 }
 
@@ -145,7 +145,7 @@ out_row(const struct tool *t, struct out *o, const rc_row *r)
 
 	if (rc_table_write(&o->table, r, &err) != 0) {
 		rc_atomic_abort(&o->file);
-		tool_fail(t, "%s: %s", t->out ? t->out : "standard output", err.msg);
+		tool_fail_at(t, t->out ? t->out : "standard output", err.msg);
 	}
 }
 
@@ -157,7 +157,7 @@ out_close(const struct tool *t, struct out *o)
 	if (rc_table_end(&o->table, &err) != 0 ||
 	    rc_atomic_commit(&o->file, &err) != 0) {
 		rc_atomic_abort(&o->file);
-		tool_fail(t, "%s: %s", t->out ? t->out : "standard output", err.msg);
+		tool_fail_at(t, t->out ? t->out : "standard output", err.msg);
 	}
 }
 
@@ -471,7 +471,7 @@ gnuplot_script(const struct tool *t, const char *path, const rc_grid *g,
 		png[len - 3] = '\0';
 	strcat(png, ".png");
 	if (rc_atomic_open(&a, path, &err) != 0)
-		tool_fail(t, "%s: %s", path, err.msg);
+		tool_fail_at(t, path, err.msg);
 	fprintf(a.fp, "# C(q) written by surfstat %s\n"
 	    "# convention: C(q) = (2pi)^-2 int d^2r <h(0)h(r)> exp(-iq.r);\n"
 	    "# contact.engineering (Jacobs, Junge, Pastewka 2017) uses (2pi)^2 C(q)\n"
@@ -498,7 +498,7 @@ gnuplot_script(const struct tool *t, const char *path, const rc_grid *g,
 	free(png);
 	if (ferror(a.fp) || rc_atomic_commit(&a, &err) != 0) {
 		rc_atomic_abort(&a);
-		tool_fail(t, "%s: %s", path, ferror(a.fp) ? "write error" : err.msg);
+		tool_fail_at(t, path, ferror(a.fp) ? "write error" : err.msg);
 	}
 }
 
@@ -627,11 +627,7 @@ main(int argc, char **argv)
 				tool_bad(&t, "--bins-per-decade %s: want 1 to 1000", optarg);
 			break;
 		default:
-			if (optopt != 0 && strchr("ojL", optopt) != NULL)
-				tool_bad(&t, "-%c: needs a value", optopt);
-			else
-				tool_bad(&t, "%s: unknown option or missing value",
-				    argv[optind - 1]);
+			tool_bad_option(&t, "ho:j:qL:", longopts, argv);
 		}
 	}
 	if (optind < argc)
@@ -708,10 +704,10 @@ main(int argc, char **argv)
 	if (mask_path != NULL) {
 		mask = tool_read_grid(&t, mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)
-			tool_fail(&t, "%s: %s", mask_path, err.msg);
+			tool_fail_at(&t, mask_path, err.msg);
 	}
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
-		tool_fail(&t, "%s: %s", t.png, err.msg);
+		tool_fail_at(&t, t.png, err.msg);
 	/* One plan for every transform of the run (a handful: the scalars
 	 * take nine), made after the mask so that planning never waits on
 	 * input that turns out bad. */

@@ -293,11 +293,7 @@ main(int argc, char **argv)
 				tool_bad(&t, "--carve-width %s: must be positive", optarg);
 			break;
 		default:
-			if (optopt != 0 && strchr("wojL", optopt) != NULL)
-				tool_bad(&t, "-%c: needs a value", optopt);
-			else
-				tool_bad(&t, "%s: unknown option or missing value",
-				    argv[optind - 1]);
+			tool_bad_option(&t, "hw:o:j:qL:", longopts, argv);
 		}
 	}
 	if (optind < argc)
@@ -366,7 +362,7 @@ main(int argc, char **argv)
 			width = 4 * fmax(g->lx / (double)g->nx, g->ly / (double)g->ny);
 		if (rc_carve_rough(g, mask, depth, width, rough,
 		    (unsigned long)carve_seed, &err) != 0)
-			tool_fail(&t, "%s: %s", carve_mask, err.msg);
+			tool_fail_at(&t, carve_mask, err.msg);
 		rc_grid_free(mask);
 	}
 	if (rmsg > 0) {
@@ -376,7 +372,7 @@ main(int argc, char **argv)
 		/* The generation target no longer describes the heights. */
 		rc_grid_meta_unset(g, "rms_gradient");
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
-		tool_fail(&t, "%s: %s", t.png, err.msg);
+		tool_fail_at(&t, t.png, err.msg);
 	tool_write_grid(&t, g, t.out);
 	rc_grid_free(g);
 	return tool_exit(&t, 0);

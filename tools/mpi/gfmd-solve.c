@@ -68,7 +68,7 @@ write_field(const struct tool *t, const rc_grid *h, size_t ny,
 	    rc_grid_history_add(g, t->cmdline, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	if (rc_mpi_surf_write(g, ny, local, path, &err) != 0)
-		tool_fail(t, "%s: %s", path, err.msg);
+		tool_fail_at(t, path, err.msg);
 	rc_grid_free(g);
 }
 
@@ -133,7 +133,7 @@ main(int argc, char **argv)
 	mpitool_threads(&t);
 
 	if ((h = rc_mpi_surf_read(argv[optind], &ny, &height, &err)) == NULL)
-		tool_fail(&t, "%s: %s", argv[optind], err.msg);
+		tool_fail_at(&t, argv[optind], err.msg);
 	if (!h->periodic && o.boundary != RC_BOUNDARY_PERIODIC)
 		tool_fail(&t, "%s: a finite patch (not periodic) needs free "
 		    "boundaries, which the MPI build does not have (use the serial "
@@ -152,6 +152,7 @@ main(int argc, char **argv)
 	rc_mpi_max(&plan_seconds, 1);
 	rc_mpi_rows(h->nx, ny, &rows, &j0, &alloc);
 	gbar = rc_mpi_gbar(solver);
+	gfmd_check_scale(&t, argv[optind], NAN, gbar);
 	if (o.nreduced && !(gbar > 0))
 		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
@@ -162,7 +163,7 @@ main(int argc, char **argv)
 		rc_grid *uh = rc_mpi_surf_read(o.init, &init_ny, &u, &err);
 
 		if (uh == NULL)
-			tool_fail(&t, "%s: %s", o.init, err.msg);
+			tool_fail_at(&t, o.init, err.msg);
 		if (uh->nx != h->nx || init_ny != ny)
 			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
 			    uh->nx, init_ny, h->nx, ny);
@@ -207,11 +208,17 @@ main(int argc, char **argv)
 			    .stats = &st, .mean_gap = mean_gap,
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
+			    .tol = o.so.tol,
 			    .seconds = seconds, .plan_seconds = plan_seconds,
 			    .method = "fire", .boundary = "periodic",
 			    .approach = rc_solver_approach(solver),
 			    .indenter = h, .nx = h->nx, .ny = ny };
 
+			const char *why = gfmd_kappa_c_why(&in);
+
+			if (why != NULL && rank == 0)
+				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
+				    why);
 			if (gfmd_result_row(&row, &in) != 0)
 				tool_fail(&t, "out of memory");
 		}

@@ -117,7 +117,7 @@ main(int argc, char **argv)
 		if ((opt != 'L' && tool_common_option(&t, opt, optarg)) ||
 		    surfgen_option(&t, &o, opt, optarg))
 			continue;
-		tool_bad(&t, "%s: unknown option or missing value", argv[optind - 1]);
+		tool_bad_option(&t, "hn:L:H:o:j:q", longopts, argv);
 	}
 	if (optind < argc)
 		tool_bad(&t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
