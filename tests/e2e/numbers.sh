@@ -60,11 +60,12 @@ msg "surfgen ambiguous --lambda" "surfgen: --lambda: ambiguous: --lambda-r, --la
 msg "contact-stats --lenient=1" "contact-stats: --lenient: takes no value (given '1')" contact-stats --lenient=1 c32.tsv
 msg "contact-stats unknown -x" "contact-stats: -x: unknown option" contact-stats -x c32.tsv
 # A file the library names is named once.
-check_status "surfgen -o into a missing directory" 1 surfgen -n 8 -o nodir/a.surf
+# (refused before any work, as a usage problem: exit 2)
+check_status "surfgen -o into a missing directory" 2 surfgen -n 8 -o nodir/a.surf
 check "... names the path once" [ "$(grep -o 'nodir/a.surf' "$T_TMP/stderr" | wc -l)" -eq 1 ]
-check_status "gfmd-solve -o into a missing directory" 1 gfmd-solve -q -p 0.1 -o nodir/a.tsv s32.surf
+check_status "gfmd-solve -o into a missing directory" 2 gfmd-solve -q -p 0.1 -o nodir/a.tsv s32.surf
 check "... names the path once" [ "$(grep -o 'nodir/a.tsv' "$T_TMP/stderr" | wc -l)" -eq 1 ]
-check_status "surfstat --gnuplot into a missing directory" 1 surfstat --gnuplot nodir/a.gp s32.surf
+check_status "surfstat --gnuplot into a missing directory" 2 surfstat --gnuplot nodir/a.gp s32.surf
 check "... names the path once" [ "$(grep -o 'nodir/a.gp' "$T_TMP/stderr" | wc -l)" -eq 1 ]
 
 # ---- --json is valid JSON for every value ----
