@@ -87,4 +87,14 @@ for m in fire cg; do
 	    "$(field_diff g1.txt g2.txt)" 0 1e-6
 done
 
+# --- the wait policy (lib/threads.h) --------------------------------------
+# libgomp reports the wait policy it started with (OMP_DISPLAY_ENV): passive
+# unless the user chose one; and a user's choice stays.
+policy() { env "$@" OMP_DISPLAY_ENV=true surfgen -q -n 8 -o /dev/null 2>&1 |
+	sed -n "s/.*OMP_WAIT_POLICY = '\([A-Z]*\)'.*/\1/p"; }
+check "default wait policy is passive ($(policy -u OMP_WAIT_POLICY))" \
+    test "$(policy -u OMP_WAIT_POLICY)" = PASSIVE
+check "OMP_WAIT_POLICY=active is kept ($(policy OMP_WAIT_POLICY=active))" \
+    test "$(policy OMP_WAIT_POLICY=active)" = ACTIVE
+
 summary
