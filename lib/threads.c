@@ -3,6 +3,7 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -54,19 +55,18 @@ rc_threads_auto(void)
 #endif
 }
 
-/* Passive waiting (threads.h).  Only in an executable: a shared object may
- * not have a pre-initialisation array (-fPIC without -fPIE). */
-#if defined(_OPENMP) && defined(__ELF__) && defined(__linux__) && \
-    (!defined(__PIC__) || defined(__PIE__))
-static void
-wait_passively(int argc, char **argv, char **envp)
+int
+rc_threads_wait_passively(char **argv)
 {
-	(void)argc;
+#ifdef _OPENMP
+	if (getenv("OMP_WAIT_POLICY") != NULL)
+		return 0;
+	if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0)
+		return -1;
+	execv("/proc/self/exe", argv);
+	return -1;	/* no /proc: run on, as before */
+#else
 	(void)argv;
-	(void)envp;
-	setenv("OMP_WAIT_POLICY", "passive", 0);
-}
-
-__attribute__((section(".preinit_array"), used))
-static void (*const rc_threads_preinit)(int, char **, char **) = wait_passively;
+	return 0;
 #endif
+}

@@ -2,20 +2,21 @@
  * idle OpenMP threads wait.
  *
  * Waiting.  An OpenMP thread that reaches the end of a parallel region
- * before the others spins (libgomp: some 300000 polls) unless
- * OMP_WAIT_POLICY=passive.  On a machine where other processes compete
- * for the cores, a spinning thread holds a core the descheduled thread it
- * waits for needs, and every region stalls: a 512^2 FIRE solve with one
- * busy competitor took 5 to 40 times as long with two spinning threads as
- * with -j 1 (roughcontact(7), RUNNING LARGE PROBLEMS).  libgomp reads the
- * policy once, when it is loaded, before main runs, so a program linking
- * this file (anything that calls rc_fft_set_threads) sets
- * OMP_WAIT_POLICY=passive from the ELF pre-initialisation array, which
- * glibc runs before any shared library's constructor.  A policy the user
- * set is kept.  The variable is set for libgomp's start-up only: glibc
- * hands main and child processes the environment the program was started
- * with.  Passive waiting costs a futex wake per region on an idle
- * machine (measured: within the noise of the benchmark, bench_gfmd).
+ * before the others spins (libgomp: 300000 polls, some milliseconds)
+ * unless OMP_WAIT_POLICY=passive.  On a machine where other processes
+ * compete for the cores, a spinning thread holds a core that the
+ * descheduled thread it waits for needs, and every region stalls: see
+ * roughcontact(7), RUNNING LARGE PROBLEMS, for the measured cost.  libgomp
+ * reads the policy once, when it is loaded, before main runs; setting it
+ * from main is too late, and so is glibc's pre-initialisation array
+ * (measured: the variable set there is gone again when libgomp reads the
+ * environment).  So rc_threads_wait_passively, called first thing in
+ * main, sets OMP_WAIT_POLICY=passive and executes the program again
+ * (/proc/self/exe, the same arguments, process id and open files); a
+ * policy the user set is kept, and then nothing happens.  Returns 0 if the
+ * policy was set already, -1 if it could not execute (no /proc: the
+ * program runs on with libgomp's default); on success it does not return.
+ * Call it before reading any input and before MPI_Init.
  *
  * Count.  rc_threads_auto is the count when neither the caller (-j) nor
  * OMP_NUM_THREADS gave one: 1 inside a parallel make (MAKEFLAGS holds -j
@@ -26,6 +27,7 @@
 #ifndef RC_THREADS_H
 #define RC_THREADS_H
 
+int rc_threads_wait_passively(char **argv);
 int rc_threads_auto(void);
 
 /* 1 if the make flags string (MAKEFLAGS) asks for parallel jobs: a word

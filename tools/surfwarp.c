@@ -10,6 +10,7 @@
 #include "common.h"
 #include "fft.h"
 #include "png.h"
+#include "threads.h"
 #include "warp.h"
 
 enum {
@@ -72,6 +73,7 @@ main(int argc, char **argv)
 	rc_grid *g;
 	rc_err err;
 
+	rc_threads_wait_passively(argv);	/* first: see threads.h */
 	tool_init(&t, "surfwarp", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "hw:o:j:qL:", longopts, NULL)) != -1) {

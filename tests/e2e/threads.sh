@@ -88,13 +88,23 @@ for m in fire cg; do
 done
 
 # --- the wait policy (lib/threads.h) --------------------------------------
-# libgomp reports the wait policy it started with (OMP_DISPLAY_ENV): passive
-# unless the user chose one; and a user's choice stays.
-policy() { env "$@" OMP_DISPLAY_ENV=true surfgen -q -n 8 -o /dev/null 2>&1 |
-	sed -n "s/.*OMP_WAIT_POLICY = '\([A-Z]*\)'.*/\1/p"; }
-check "default wait policy is passive ($(policy -u OMP_WAIT_POLICY))" \
-    test "$(policy -u OMP_WAIT_POLICY)" = PASSIVE
-check "OMP_WAIT_POLICY=active is kept ($(policy OMP_WAIT_POLICY=active))" \
-    test "$(policy OMP_WAIT_POLICY=active)" = ACTIVE
+# libgomp's spin count at start-up (OMP_DISPLAY_ENV=verbose; its last block
+# is the one of the program that runs): 0, passive, when the user set no
+# policy (the tool executed itself again with OMP_WAIT_POLICY=passive);
+# libgomp's own for a policy the user set.
+spincount() { env "$@" OMP_DISPLAY_ENV=verbose "$RC_BIN/$tool" $args 2>&1 >/dev/null |
+	sed -n "s/.*GOMP_SPINCOUNT = '\([0-9]*\)'.*/\1/p" | tail -1; }
+for tool in surfgen surfwarp surfstat gfmd-solve; do
+	case $tool in
+	surfgen) args="-q -n 8 -o /dev/null" ;;
+	surfwarp) args="-q -w 2 -o /dev/null h.surf" ;;
+	surfstat) args="-q h.surf" ;;
+	gfmd-solve) args="-q -p 0.1 -o /dev/null h.surf" ;;
+	esac
+	n=$(spincount -u OMP_WAIT_POLICY)
+	check "$tool: passive waiting by default (spin count $n)" test "$n" = 0
+	n=$(spincount OMP_WAIT_POLICY=active)
+	check "$tool: OMP_WAIT_POLICY=active kept (spin count $n)" test "$n" -gt 0
+done
 
 summary
