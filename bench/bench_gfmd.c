@@ -1,6 +1,7 @@
 /* bench_gfmd.c - cost of the two contact solvers (prints, never fails).
  *
- * For n^2 = 256^2 ... 2048^2 (4096^2 with BENCH_BIG=1): an rc_synth surface
+ * For n^2 = 256^2 ... 2048^2 (4096^2 with BENCH_BIG=1, only 256^2 and 512^2
+ * with BENCH_QUICK=1, for a loaded machine): an rc_synth surface
  * with H = 0.8, lambda_r = L/2, lambda_s = L/64, gbar = 1, solved at
  * p* = 0.05 by FIRE and CG at the default tolerance (1e-6).  Columns:
  * iterations; fft_pairs, the r2c + c2r transforms of the solve counted by
@@ -251,6 +252,8 @@ main(int argc, char **argv)
 
 	if (getenv("BENCH_BIG"))
 		ns = 5;
+	if (getenv("BENCH_QUICK"))
+		ns = 2;
 	printf("# gfmd-solve solvers, %d threads, p* = 0.05, H = 0.8, lambda_r = L/2,"
 	    " lambda_s = L/64\n", threads);
 	printf("n\tmethod\titerations\tfft_pairs\tpairs_per_iter\tseconds\t"

@@ -59,7 +59,9 @@
  *                     strong damping loses little)
  *   F_ALPHA     0.99  mixing decay per positive-power step past N_MIN
  *   M0_SCALE    2     mean-mode mass (above)
- * Cost: two FFT pairs and three O(N) passes per iteration.  The iteration
+ * Cost: two FFT pairs, two scalings of the spectrum and three O(N) passes
+ * per iteration (the wall, the mixing sums, which only read, and the
+ * update, which applies the clamp).  The iteration
  * count at tol 1e-6 is nearly independent of N (256^2: 43, 512^2: 41,
  * 1024^2: 38 at p* = 0.05; the uniform real-space mass this replaces took
  * 262, 299, 467 with one pair each, growing like sqrt(n)).  Why not one
