@@ -21,7 +21,9 @@
  * thread, each with no competitor and with one busy competitor (a child
  * process spinning on a core, started before the solve and killed after
  * it; alarm() ends it if this program dies first), CONTENTION_ROUNDS
- * rounds in turn; medians and the ratio default / one thread.
+ * rounds in turn; medians and the ratio default / one thread.  Inside
+ * make -j N the default is one thread (lib/threads.h), which the header
+ * line says: run `make bench` without -j to measure two.
  */
 #include <math.h>
 #include <stdio.h>
