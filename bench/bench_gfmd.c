@@ -246,11 +246,10 @@ int
 main(int argc, char **argv)
 {
 	size_t sizes[] = { 256, 512, 1024, 2048, 4096 }, ns = 4, z;
-	int threads;
+	int threads = rc_fft_set_threads(0);
 
 	(void)argc;
-	rc_threads_wait_passively(argv);	/* as the tools do */
-	threads = rc_fft_set_threads(0);
+	rc_threads_wait_passively(threads, argv);	/* as the tools do */
 
 	if (getenv("BENCH_BIG"))
 		ns = 5;

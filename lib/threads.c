@@ -56,16 +56,17 @@ rc_threads_auto(void)
 }
 
 int
-rc_threads_wait_passively(char **argv)
+rc_threads_wait_passively(int threads, char **argv)
 {
 #ifdef _OPENMP
-	if (getenv("OMP_WAIT_POLICY") != NULL)
+	if (threads <= 1 || getenv("OMP_WAIT_POLICY") != NULL)
 		return 0;
 	if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0)
 		return -1;
 	execv("/proc/self/exe", argv);
 	return -1;	/* no /proc: run on, as before */
 #else
+	(void)threads;
 	(void)argv;
 	return 0;
 #endif

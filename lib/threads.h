@@ -10,13 +10,15 @@
  * reads the policy once, when it is loaded, before main runs; setting it
  * from main is too late, and so is glibc's pre-initialisation array
  * (measured: the variable set there is gone again when libgomp reads the
- * environment).  So rc_threads_wait_passively, called first thing in
- * main, sets OMP_WAIT_POLICY=passive and executes the program again
- * (/proc/self/exe, the same arguments, process id and open files); a
- * policy the user set is kept, and then nothing happens.  Returns 0 if the
- * policy was set already, -1 if it could not execute (no /proc: the
- * program runs on with libgomp's default); on success it does not return.
- * Call it before reading any input and before MPI_Init.
+ * environment).  So rc_threads_wait_passively, called once the thread
+ * count is known (rc_fft_set_threads' result) and before any input is
+ * read or output written, sets OMP_WAIT_POLICY=passive and executes the
+ * program again (/proc/self/exe, the arguments main was given, the same
+ * process id and open files).  Nothing happens for one thread (no team,
+ * nothing spins: so -j 1 and runs under make -j N start once) or when the
+ * user set a policy.  Returns 0 then, -1 if it could not execute (no
+ * /proc: the program runs on with libgomp's default); otherwise it does
+ * not return.  Not for MPI programs after MPI_Init.
  *
  * Count.  rc_threads_auto is the count when neither the caller (-j) nor
  * OMP_NUM_THREADS gave one: 1 inside a parallel make (MAKEFLAGS holds -j
@@ -27,7 +29,7 @@
 #ifndef RC_THREADS_H
 #define RC_THREADS_H
 
-int rc_threads_wait_passively(char **argv);
+int rc_threads_wait_passively(int threads, char **argv);
 int rc_threads_auto(void);
 
 /* 1 if the make flags string (MAKEFLAGS) asks for parallel jobs: a word

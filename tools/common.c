@@ -11,6 +11,7 @@
 
 #include "atomic.h"
 #include "fft.h"
+#include "threads.h"
 
 void
 tool_init(struct tool *t, const char *name, int argc, char **argv)
@@ -23,8 +24,10 @@ tool_init(struct tool *t, const char *name, int argc, char **argv)
 	t->fft_effort = -1;
 	for (int i = 0; i < argc; i++)
 		len += strlen(argv[i]) + 3;
-	if ((t->cmdline = malloc(len)) == NULL)
+	if ((t->cmdline = malloc(len)) == NULL ||
+	    (t->argv = malloc((size_t)(argc + 1) * sizeof(*t->argv))) == NULL)
 		tool_fail(t, "out of memory");
+	memcpy(t->argv, argv, (size_t)(argc + 1) * sizeof(*t->argv));
 	t->cmdline[0] = '\0';
 	for (int i = 0; i < argc; i++) {
 		const char *a = i == 0 ? name : argv[i];
@@ -145,7 +148,7 @@ tool_fft_setup(struct tool *t)
 	const char *env = getenv("RC_WISDOM");
 	rc_err err;
 
-	rc_fft_set_threads(t->threads);
+	rc_threads_wait_passively(rc_fft_set_threads(t->threads), t->argv);
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;
 	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)
@@ -360,6 +363,7 @@ tool_exit(const struct tool *t, int status)
 		status = status ? status : 1;
 	}
 	free(t->cmdline);
+	free(t->argv);
 	return status;
 }
 

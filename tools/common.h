@@ -42,6 +42,8 @@ struct tool {
 	const char *wisdom;	/* --wisdom FILE, else $RC_WISDOM, else NULL */
 	int fft_effort;		/* --fft-effort, -1 for the policy */
 	int fft_measured;	/* a plan was asked for with MEASURE or more */
+	char **argv;		/* main's arguments as given (getopt reorders
+				 * main's array), for rc_threads_wait_passively */
 };
 
 /* The FFT options of the tools that plan transforms; put them in the

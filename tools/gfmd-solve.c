@@ -22,7 +22,6 @@
 #include "solver.h"
 #include "spectral.h"
 #include "table.h"
-#include "threads.h"
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
 static volatile sig_atomic_t stop_signal;
@@ -226,7 +225,6 @@ main(int argc, char **argv)
 	long resumed_iterations = 0;
 	int c, method, status = 0;
 
-	rc_threads_wait_passively(argv);	/* first: see threads.h */
 	tool_init(&t, "gfmd-solve", argc, argv);
 	gfmd_opts_init(&o);
 	opterr = 0;	/* tool_bad reports, so that all problems are counted */

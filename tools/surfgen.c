@@ -8,7 +8,6 @@
 #include "fft.h"
 #include "png.h"
 #include "surfgen_opts.h"
-#include "threads.h"
 
 static void
 usage(void)
@@ -61,7 +60,6 @@ main(int argc, char **argv)
 	double plan_seconds, seconds;
 	enum rc_fft_effort effort;
 
-	rc_threads_wait_passively(argv);	/* first: see threads.h */
 	tool_init(&t, "surfgen", argc, argv);
 	surfgen_opts_init(&o);
 	opterr = 0;	/* unknown options are reported with the others */

@@ -17,7 +17,6 @@
 #include "spectral.h"
 #include "stats.h"
 #include "table.h"
-#include "threads.h"
 
 enum {
 	OPT_MASK = OPT_TOOL_FIRST,
@@ -324,7 +323,6 @@ main(int argc, char **argv)
 	rc_fft fft, *plan;
 	rc_err err;
 
-	rc_threads_wait_passively(argv);	/* first: see threads.h */
 	tool_init(&t, "surfstat", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "ho:j:qL:", longopts, NULL)) != -1) {

@@ -73,7 +73,6 @@ main(int argc, char **argv)
 	rc_grid *g;
 	rc_err err;
 
-	rc_threads_wait_passively(argv);	/* first: see threads.h */
 	tool_init(&t, "surfwarp", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "hw:o:j:qL:", longopts, NULL)) != -1) {
@@ -162,7 +161,7 @@ main(int argc, char **argv)
 	tool_not_input(&t, "--png", t.png, carve_mask);
 	tool_usage_check(&t);
 
-	rc_fft_set_threads(t.threads);
+	rc_threads_wait_passively(rc_fft_set_threads(t.threads), t.argv);
 	g = tool_read_grid(&t, in);
 	if (have_w) {
 		double dmin, dmax;

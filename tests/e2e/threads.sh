@@ -88,12 +88,13 @@ for m in fire cg; do
 done
 
 # --- the wait policy (lib/threads.h) --------------------------------------
-# libgomp's spin count at start-up (OMP_DISPLAY_ENV=verbose; its last block
-# is the one of the program that runs): 0, passive, when the user set no
-# policy (the tool executed itself again with OMP_WAIT_POLICY=passive);
-# libgomp's own for a policy the user set.
-spincount() { env "$@" OMP_DISPLAY_ENV=verbose "$RC_BIN/$tool" $args 2>&1 >/dev/null |
-	sed -n "s/.*GOMP_SPINCOUNT = '\([0-9]*\)'.*/\1/p" | tail -1; }
+# libgomp's spin count at start-up (OMP_DISPLAY_ENV=verbose prints one
+# block per start; the last is the program that runs): with two threads
+# and no policy set, 0 (passive: the tool executed itself again with
+# OMP_WAIT_POLICY=passive); a policy the user set is kept; one thread
+# starts once (nothing spins, nothing to change).
+spin() { env -u MAKEFLAGS "$@" OMP_DISPLAY_ENV=verbose "$RC_BIN/$tool" $args 2>&1 >/dev/null |
+	sed -n "s/.*GOMP_SPINCOUNT = '\([0-9]*\)'.*/\1/p"; }
 for tool in surfgen surfwarp surfstat gfmd-solve; do
 	case $tool in
 	surfgen) args="-q -n 8 -o /dev/null" ;;
@@ -101,10 +102,14 @@ for tool in surfgen surfwarp surfstat gfmd-solve; do
 	surfstat) args="-q h.surf" ;;
 	gfmd-solve) args="-q -p 0.1 -o /dev/null h.surf" ;;
 	esac
-	n=$(spincount -u OMP_WAIT_POLICY)
-	check "$tool: passive waiting by default (spin count $n)" test "$n" = 0
-	n=$(spincount OMP_WAIT_POLICY=active)
-	check "$tool: OMP_WAIT_POLICY=active kept (spin count $n)" test "$n" -gt 0
+	args="$args -j 2"
+	n=$(spin -u OMP_WAIT_POLICY | tail -1)
+	check "$tool -j 2: passive waiting by default (spin count $n)" test "$n" = 0
+	n=$(spin OMP_WAIT_POLICY=active | tail -1)
+	check "$tool -j 2: OMP_WAIT_POLICY=active kept (spin count $n)" test "$n" -gt 0
+	args="${args% -j 2} -j 1"
+	n=$(spin -u OMP_WAIT_POLICY | wc -l)
+	check "$tool -j 1: started once ($n start-ups)" test "$n" -eq 1
 done
 
 summary
