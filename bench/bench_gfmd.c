@@ -1,6 +1,7 @@
 /* bench_gfmd.c - cost of the two contact solvers (prints, never fails).
  *
- * For n^2 = 256^2 ... 2048^2 (4096^2 with BENCH_BIG=1): an rc_synth surface
+ * For n^2 = 256^2 ... 2048^2 (4096^2 with BENCH_BIG=1, only 256^2 and 512^2
+ * with BENCH_QUICK=1, for a loaded machine): an rc_synth surface
  * with H = 0.8, lambda_r = L/2, lambda_s = L/64, gbar = 1, solved at
  * p* = 0.05 by FIRE and CG at the default tolerance (1e-6).  Columns:
  * iterations; fft_pairs, the r2c + c2r transforms of the solve counted by
@@ -11,7 +12,9 @@
  * passes); bytes per point (rc_solver_bytes, and the peak RSS of the
  * process so far, which includes the indenter and the timing plan); and
  * |a_r - a_r_ref| / a_r_ref against a FIRE solve at tol 1e-10 (FIRE and CG
- * agree at that tolerance: tests/test_solver.c).
+ * agree at that tolerance: tests/test_solver.c); cpu_iter_in_pairs, the
+ * same ratio in process CPU time (the solve's over the pair's), which
+ * other processes on the machine disturb far less than the wall time.
  *
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
@@ -19,17 +22,30 @@
  * pairs as a quarter each, lib/fire_free.c), pair_seconds is then a
  * padded pair, and the reference is a free FIRE solve at 1e-10.  Free
  * boundaries stop at 1024^2 (a padded 2048^2) unless BENCH_BIG=1.
+ *
+ * Then the contention rows: the 512^2 FIRE solve with the default thread
+ * count (rc_fft_set_threads(0), as a tool without -j) and with one
+ * thread, each with no competitor and with one busy competitor (a child
+ * process spinning on a core, started before the solve and killed after
+ * it; alarm() ends it if this program dies first), CONTENTION_ROUNDS
+ * rounds in turn; medians and the ratio default / one thread.  Inside
+ * make -j N the default is one thread (lib/threads.h), which the header
+ * line says: run `make bench` without -j to measure two.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/resource.h>
+#include <sys/wait.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "fft.h"
 #include "solver.h"
 #include "synth.h"
+#include "threads.h"
 
 static double
 now(void)
@@ -37,6 +53,15 @@ now(void)
 	struct timespec t;
 
 	clock_gettime(CLOCK_MONOTONIC, &t);
+	return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static double
+cpu_now(void)
+{
+	struct timespec t;
+
+	clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
 	return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
@@ -49,22 +74,25 @@ peak_rss_bytes(void)
 	return 1024.0 * (double)ru.ru_maxrss;
 }
 
+/* Wall and CPU seconds of one r2c + c2r pair. */
 static double
-fft_pair_seconds(size_t n)
+fft_pair_seconds(size_t n, double *cpu)
 {
 	rc_fft f;
 	rc_err err;
-	double t0;
+	double t0, c0;
 	int reps = 0;
 
 	if (rc_fft_init(&f, n, n, RC_FFT_ESTIMATE, &err) != 0)
-		return NAN;
+		return *cpu = NAN;
 	t0 = now();
+	c0 = cpu_now();
 	do {
 		rc_fft_forward(&f);
 		rc_fft_backward(&f);
 		reps++;
 	} while (now() - t0 < 0.5 || reps < 5);
+	*cpu = (cpu_now() - c0) / reps;
 	t0 = (now() - t0) / reps;
 	rc_fft_free(&f);
 	return t0;
@@ -81,48 +109,87 @@ contact_fraction(const rc_solver *s, size_t nn)
 	return (double)nc / (double)nn;
 }
 
-/* One boundary kind on the map g of n x n points: the reference, then
- * both methods; a row each. */
+/* The benchmark's surface on an n^2 grid; NULL after a message. */
+static rc_grid *
+surface(size_t n)
+{
+	rc_synth_params sp;
+	rc_err err;
+	rc_grid *g;
+
+	rc_synth_defaults(&sp);
+	sp.nx = sp.ny = n;
+	sp.lx = sp.ly = 1;
+	sp.hurst = 0.8;
+	sp.lambda_r = 0.5;
+	sp.lambda_s = 1.0 / 64;
+	sp.seed = 1;
+	sp.rms_gradient = 1;
+	if ((g = rc_synth(&sp, &err)) == NULL)
+		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+	return g;
+}
+
+/* A solve at p* = 0.05 and tolerance tol; the solver (NULL after a
+ * message), its result and the process CPU seconds of the solve. */
+static rc_solver *
+solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
+    double tol, rc_solve_result *r, double *cpu)
+{
+	rc_solver_opts o;
+	rc_solver *s;
+	rc_err err;
+	double c0;
+
+	rc_solver_defaults(&o);
+	o.method = method;
+	o.boundary = boundary;
+	if (tol > 0)
+		o.tol = tol;
+	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
+		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		return NULL;
+	}
+	c0 = cpu_now();
+	if (rc_solver_solve(s, 0.05, r, &err) < 0) {
+		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		rc_solver_free(s);
+		return NULL;
+	}
+	*cpu = cpu_now() - c0;
+	return s;
+}
+
+/* One boundary kind on the map g of n x n points: the reference (FIRE at
+ * tol 1e-10), then both methods; a row each.  Free boundaries count pairs
+ * of the padded 2n x 2n transform and compare with a padded pair. */
 static int
 bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 {
 	size_t nn = n * n;
-	rc_err err;
-	double pair, ref;
-	rc_solver_opts o;
+	double pair, pair_cpu, ref, cpu;
 	rc_solver *s;
 	rc_solve_result r;
 	int m;
 
-	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n);
-	rc_solver_defaults(&o);
-	o.method = RC_METHOD_FIRE;
-	o.boundary = b;
-	o.tol = 1e-10;
-	if ((s = rc_solver_new(g, &o, &err)) == NULL ||
-	    rc_solver_solve(s, 0.05, &r, &err) < 0) {
-		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
+	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, &r, &cpu)) == NULL)
 		return -1;
-	}
 	ref = contact_fraction(s, nn);
 	rc_solver_free(s);
 	for (m = 0; m < 2; m++) {
+		enum rc_method method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
 		double ar, iters;
 
-		rc_solver_defaults(&o);
-		o.method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
-		o.boundary = b;
-		if ((s = rc_solver_new(g, &o, &err)) == NULL ||
-		    rc_solver_solve(s, 0.05, &r, &err) < 0) {
-			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		if ((s = solve(g, method, b, 0, &r, &cpu)) == NULL)
 			return -1;
-		}
 		ar = contact_fraction(s, nn);
 		iters = (double)(r.iterations ? r.iterations : 1);
-		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.1f\t%.1f\t%.6f\t%.1e\n",
-		    n, rc_boundary_name(b), rc_method_name(o.method), r.iterations,
+		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.2f\t"
+		    "%.1f\t%.1f\t%.6f\t%.1e\n",
+		    n, rc_boundary_name(b), rc_method_name(method), r.iterations,
 		    r.fft_pairs, r.fft_pairs / iters, r.seconds, pair,
-		    r.seconds / iters / pair,
+		    r.seconds / iters / pair, cpu / iters / pair_cpu,
 		    (double)rc_solver_bytes(s) / (double)nn,
 		    peak_rss_bytes() / (double)nn, ar, fabs(ar - ref) / ref);
 		fflush(stdout);
@@ -131,41 +198,125 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	return 0;
 }
 
+#define CONTENTION_N		512
+#define CONTENTION_ROUNDS	5
+#define COMPETITOR_SECONDS	120	/* alarm: the competitor's life at most */
+
+/* A child that spins until killed (or its alarm rings); -1 if none. */
+static pid_t
+competitor_start(void)
+{
+	pid_t pid;
+
+	fflush(stdout);
+	pid = fork();
+
+	if (pid == 0) {
+		volatile unsigned long spin = 0;
+
+		alarm(COMPETITOR_SECONDS);
+		for (;;)
+			spin++;
+	}
+	if (pid < 0)
+		perror("bench_gfmd: fork");
+	return pid;
+}
+
+static void
+competitor_stop(pid_t pid)
+{
+	kill(pid, SIGKILL);
+	waitpid(pid, NULL, 0);
+}
+
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
+static double
+median(double *v, int n)
+{
+	qsort(v, (size_t)n, sizeof(*v), cmp_double);
+	return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* The contention rows (see the top of the file). */
+static int
+contention(void)
+{
+	double t[2][2][CONTENTION_ROUNDS], med[2][2], cpu;
+	int def = rc_fft_set_threads(0), busy, j, round;
+	rc_grid *g = surface(CONTENTION_N);
+	rc_solve_result r;
+	rc_solver *s;
+
+	if (g == NULL)
+		return 1;
+	for (round = 0; round < CONTENTION_ROUNDS; round++)
+		for (busy = 0; busy < 2; busy++)
+			for (j = 0; j < 2; j++) {
+				pid_t pid = busy ? competitor_start() : 0;
+
+				if (pid < 0)
+					return 1;
+				rc_fft_set_threads(j == 0 ? 0 : 1);
+				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, &r, &cpu);
+				if (pid > 0)
+					competitor_stop(pid);
+				if (s == NULL)
+					return 1;
+				t[busy][j][round] = r.seconds;
+				rc_solver_free(s);
+			}
+	for (busy = 0; busy < 2; busy++)
+		for (j = 0; j < 2; j++)
+			med[busy][j] = median(t[busy][j], CONTENTION_ROUNDS);
+	printf("\n# contention: %d^2 FIRE solve (%ld iterations), medians of %d "
+	    "rounds; default = %d thread%s\n", CONTENTION_N, r.iterations,
+	    CONTENTION_ROUNDS, def, def == 1 ? "" : "s");
+	printf("competitors\tseconds_default\tseconds_j1\tratio\n");
+	for (busy = 0; busy < 2; busy++)
+		printf("%d\t%.3f\t%.3f\t%.2f\n", busy, med[busy][0], med[busy][1],
+		    med[busy][0] / med[busy][1]);
+	rc_grid_free(g);
+	rc_fft_set_threads(0);
+	return 0;
+}
+
 int
-main(void)
+main(int argc, char **argv)
 {
 	size_t sizes[] = { 256, 512, 1024, 2048, 4096 }, ns = 4, z;
 	int threads = rc_fft_set_threads(0);
 
+	(void)argc;
+	rc_threads_wait_passively(threads, argv);	/* as the tools do */
+
 	if (getenv("BENCH_BIG"))
 		ns = 5;
+	if (getenv("BENCH_QUICK"))
+		ns = 2;
 	printf("# gfmd-solve solvers, %d threads, p* = 0.05, H = 0.8, lambda_r = L/2,"
 	    " lambda_s = L/64\n", threads);
-	printf("n\tboundary\tmethod\titerations\tfft_pairs\tpairs_per_iter\tseconds\t"
-	    "pair_seconds\titer_in_pairs\tbytes_solver\tbytes_rss\ta_r\ta_r_relerr\n");
+	printf("n\tboundary\tmethod\titerations\tfft_pairs\tpairs_per_iter\t"
+	    "seconds\tpair_seconds\titer_in_pairs\tcpu_iter_in_pairs\t"
+	    "bytes_solver\tbytes_rss\ta_r\ta_r_relerr\n");
 	for (z = 0; z < ns; z++) {
 		size_t n = sizes[z];
-		rc_synth_params sp;
 		rc_grid *g;
-		rc_err err;
 
-		rc_synth_defaults(&sp);
-		sp.nx = sp.ny = n;
-		sp.lx = sp.ly = 1;
-		sp.hurst = 0.8;
-		sp.lambda_r = 0.5;
-		sp.lambda_s = 1.0 / 64;
-		sp.seed = 1;
-		sp.rms_gradient = 1;
-		if ((g = rc_synth(&sp, &err)) == NULL) {
-			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+		if ((g = surface(n)) == NULL)
 			return 1;
-		}
 		if (bench_boundary(g, n, RC_BOUNDARY_PERIODIC) != 0 ||
 		    ((n <= 1024 || ns == 5) &&
 		    bench_boundary(g, n, RC_BOUNDARY_FREE) != 0))
 			return 1;
 		rc_grid_free(g);
 	}
-	return 0;
+	return contention();
 }

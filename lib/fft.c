@@ -10,6 +10,7 @@
 
 #include "atomic.h"
 #include "clock.h"
+#include "threads.h"
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -41,7 +42,7 @@ rc_fft_set_threads(int n)
 	if (n <= 0)
 		n = env_threads();
 	if (n <= 0)
-		n = omp_get_num_procs();
+		n = rc_threads_auto();
 	if (!initialised) {
 		fftw_init_threads();
 		initialised = 1;

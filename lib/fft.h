@@ -56,7 +56,9 @@ typedef struct rc_fft {
 
 /* Set how many threads FFTW (and OpenMP loops) use; n <= 0 means the
  * OMP_NUM_THREADS environment variable if it holds a positive number, else
- * all cores.  Call before making plans.  Returns the number in effect. */
+ * rc_threads_auto() (lib/threads.h: 1 inside a parallel make, else the
+ * cores this process may use).  Call before making plans.  Returns the
+ * number in effect. */
 int rc_fft_set_threads(int n);
 
 /* FFTW's wisdom (plans it has measured) is FFTW's own process-wide state,

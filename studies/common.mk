@@ -17,21 +17,21 @@
 # `make clean`.
 #
 # Variables a user may set: BIN (the tools), OUT (where files go),
-# FULL=1 (paper-size parameters), SOLVE_J (threads per solve, default 1:
-# parallelism comes from make -j).
+# FULL=1 (paper-size parameters), SOLVE_J (threads per solve; default the
+# tools' own: one thread under make -j N, all cores under a serial make).
 
 COMMON_DIR := $(dir $(lastword $(MAKEFILE_LIST)))
 TOP   ?= $(abspath $(COMMON_DIR)..)
 BIN   ?= $(TOP)/bin
 OUT   ?= out
 FULL  ?= 0
-SOLVE_J ?= 1
+SOLVE_J ?=
 GNUPLOT ?= gnuplot
 
 SURFGEN  = $(BIN)/surfgen -q
 SURFWARP = $(BIN)/surfwarp -q
 SURFSTAT = $(BIN)/surfstat -q
-SOLVE    = $(BIN)/gfmd-solve -q -j $(SOLVE_J)
+SOLVE    = $(BIN)/gfmd-solve -q $(if $(SOLVE_J),-j $(SOLVE_J))
 CSTATS   = $(BIN)/contact-stats -q
 
 .DEFAULT_GOAL := all

@@ -19,6 +19,7 @@
 #include "atomic.h"
 #include "fft.h"
 #include "gridcheck.h"
+#include "threads.h"
 #include "units.h"
 
 /* The program name for tool_on_signal, which may only write(2). */
@@ -84,8 +85,10 @@ tool_init(struct tool *t, const char *name, int argc, char **argv)
 	t->fft_effort = -1;
 	for (int i = 0; i < argc; i++)
 		len += strlen(argv[i]) + 3;
-	if ((t->cmdline = malloc(len)) == NULL)
+	if ((t->cmdline = malloc(len)) == NULL ||
+	    (t->argv = malloc((size_t)(argc + 1) * sizeof(*t->argv))) == NULL)
 		tool_fail(t, "out of memory");
+	memcpy(t->argv, argv, (size_t)(argc + 1) * sizeof(*t->argv));
 	t->cmdline[0] = '\0';
 	for (int i = 0; i < argc; i++) {
 		const char *a = i == 0 ? name : argv[i];
@@ -457,7 +460,7 @@ tool_fft_setup(struct tool *t)
 	const char *env = getenv("RC_WISDOM");
 	rc_err err;
 
-	rc_fft_set_threads(t->threads);
+	rc_threads_wait_passively(rc_fft_set_threads(t->threads), t->argv);
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;
 	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)
@@ -782,6 +785,7 @@ tool_exit(const struct tool *t, int status)
 		status = status ? status : 1;
 	}
 	free(t->cmdline);
+	free(t->argv);
 	return status;
 }
 

@@ -63,6 +63,8 @@ struct tool {
 	size_t nfiles;
 	const char *(*may_replace)[2];	/* (output, input) option pairs */
 	size_t nmay_replace;
+	char **argv;		/* main's arguments as given (getopt reorders
+				 * main's array), for rc_threads_wait_passively */
 };
 
 /* A file of the run, declared so that tool_usage_check can find two that

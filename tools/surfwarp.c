@@ -17,6 +17,7 @@
 #include "level.h"
 #include "png.h"
 #include "resample.h"
+#include "threads.h"
 #include "warp.h"
 
 enum {
@@ -324,7 +325,7 @@ main(int argc, char **argv)
 	tool_may_replace(&t, "-o", "the input");
 	tool_usage_check(&t);
 
-	rc_fft_set_threads(t.threads);
+	rc_threads_wait_passively(rc_fft_set_threads(t.threads), t.argv);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
 	/* Levelling steps use the valid points; -w, --flip, --carve and the
 	 * renormalisation are refused below while points are missing. */

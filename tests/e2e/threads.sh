@@ -87,4 +87,29 @@ for m in fire cg; do
 	    "$(field_diff g1.txt g2.txt)" 0 1e-6
 done
 
+# --- the wait policy (lib/threads.h) --------------------------------------
+# libgomp's spin count at start-up (OMP_DISPLAY_ENV=verbose prints one
+# block per start; the last is the program that runs): with two threads
+# and no policy set, 0 (passive: the tool executed itself again with
+# OMP_WAIT_POLICY=passive); a policy the user set is kept; one thread
+# starts once (nothing spins, nothing to change).
+spin() { env -u MAKEFLAGS "$@" OMP_DISPLAY_ENV=verbose "$RC_BIN/$tool" $args 2>&1 >/dev/null |
+	sed -n "s/.*GOMP_SPINCOUNT = '\([0-9]*\)'.*/\1/p"; }
+for tool in surfgen surfwarp surfstat gfmd-solve; do
+	case $tool in
+	surfgen) args="-q -n 8 -o /dev/null" ;;
+	surfwarp) args="-q -w 2 -o /dev/null h.surf" ;;
+	surfstat) args="-q h.surf" ;;
+	gfmd-solve) args="-q -p 0.1 -o /dev/null h.surf" ;;
+	esac
+	args="$args -j 2"
+	n=$(spin -u OMP_WAIT_POLICY | tail -1)
+	check "$tool -j 2: passive waiting by default (spin count $n)" test "$n" = 0
+	n=$(spin OMP_WAIT_POLICY=active | tail -1)
+	check "$tool -j 2: OMP_WAIT_POLICY=active kept (spin count $n)" test "$n" -gt 0
+	args="${args% -j 2} -j 1"
+	n=$(spin -u OMP_WAIT_POLICY | wc -l)
+	check "$tool -j 1: started once ($n start-ups)" test "$n" -eq 1
+done
+
 summary
