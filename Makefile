@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Makefile - build, test, install and demo the rough-contact toolkit.
 #   make                 library and tools into bin/
 #   make check           all tests; ends with "N passed, N failed[, N skipped]"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # .ci/valgrind.sh - one small pipeline under valgrind's memcheck: any
 # invalid access, use of uninitialised memory or leak (definite, indirect
 # or possible) fails the run.  The tools run single-threaded (-j 1,

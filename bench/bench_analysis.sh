@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench_analysis.sh - surfstat on a finite patch (a detrended self-affine
 # surface, so windowed by default): --psd (Hann), --psd1d x, --fit, and
 # the periodic --psd without a window, each next to one bare FFTW r2c

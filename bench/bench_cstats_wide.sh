@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench_cstats_wide.sh - contact-stats' time against the number of columns
 # of its input (four rows, two surfaces of two grids each, and N carried
 # key columns).  The reader indexes column names by hash, so the time per

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* bench_fftpair.c - one bare FFTW r2c transform of an N x N grid, the
  * yardstick of bench/bench_analysis.sh (surfstat's spectra are one r2c
  * plus O(N) work).  bench_fftpair N: plans with FFTW_ESTIMATE (as surfstat

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* bench_gfmd.c - cost of the two contact solvers (prints, never fails).
  *
  * For n^2 = 256^2 ... 2048^2 (4096^2 with BENCH_BIG=1, only 256^2 and 512^2

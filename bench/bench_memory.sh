@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench_memory.sh - peak resident memory per grid point of surfgen, surfstat
 # and gfmd-solve (FIRE and CG), at 512^2, 1024^2 and 2048^2, measured with
 # bench/peakrss (wait4's ru_maxrss).  Prints a table; never fails on size.

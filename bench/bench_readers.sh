@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # bench_readers.sh - how long opening a file takes against reading its
 # bytes: each format's reader (surfstat --channels, which reads every
 # channel and computes nothing) on one 2048^2 surface, against

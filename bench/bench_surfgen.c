@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* bench_surfgen.c - cost of rc_synth against one bare FFTW c2r of the same
  * size, timed in the same run (the target: one inverse FFT plus O(N)).
  * Prints only; never fails on time. */

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # contention.sh - gfmd-solve and surfstat while one other busy process
 # competes for the cores: wall seconds of a 512^2 FIRE solve (p* = 0.05)
 # and of surfstat on the same surface, with libgomp's default spinning

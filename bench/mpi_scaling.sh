@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # mpi_scaling.sh - the MPI build's gfmd-solve (make MPI=1) on 1 and 2 ranks
 # of this machine: wall seconds per FIRE iteration on an N^2 grid (default
 # 1024^2; BENCH_MPI_N to change), the same bounded number of iterations

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* peakrss - run a command and report its peak resident set size.
  *
  *   peakrss [-o FILE] CMD [ARG...]

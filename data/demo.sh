@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # demo.sh - the built-in default example (make demo): one self-affine
 # surface at two resolutions, its statistics, its contact at three
 # pressures, and a_r and kappa extrapolated to the continuum limit.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* atomic.c - temporary file + fsync + rename for regular files, direct
  * writes for everything else (atomic.h says which is which). */
 #define _POSIX_C_SOURCE 200809L

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* atomic.h - write a file so that it is either complete or untouched,
  * without ever replacing what is not a regular file.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* checkpoint.c - write, read and check the checkpoint of a list of
  * contact solves (see checkpoint.h for the format). */
 #include "checkpoint.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* checkpoint.h - the state of an interrupted list of contact solves, so
  * that a run can resume where it stopped (gfmd-solve --checkpoint,
  * --resume).

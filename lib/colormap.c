@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* colormap.c - CIELAB lightness ramp converted to sRGB (see colormap.h). */
 #include "colormap.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* colormap.h - a perceptually uniform colormap, computed.
  *
  * A path through CIELAB (D65): lightness L* rises linearly from 18 to 92,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* contact.c - contact fraction, contact line, masked gradients and the
  * analysis gfmd-solve reports; the patches are in patches.c.
  */

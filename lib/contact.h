@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* contact.h - analysis of a contact field: contact fraction, contact
  * line, patches, and the indenter's gradients averaged over the contact.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats.c - contact-stats' library entry: the run (rc_cstats_run) and
  * its output rows; the input and the stages are in cstats_input.c and
  * cstats_stages.c (see cstats.h, contact-stats(1)).

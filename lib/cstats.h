@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats.h - what contact-stats computes: result rows of many gfmd-solve
  * runs grouped by surface, taken to the continuum limit (Richardson in
  * eps_c = da/lambda_s), averaged over seeds, optionally extrapolated in

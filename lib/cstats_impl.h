@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats_impl.h - what the parts of contact-stats' library share: the
  * validated rows, the estimates, the run's context and its helpers
  * (cstats_input.c: pool, messages, keys, validation; cstats_stages.c: the

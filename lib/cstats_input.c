@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats_input.c - contact-stats' run context: the memory pool, the
  * messages, the grouping keys and the validation of the input rows.
  */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats_plot.c - the gnuplot script of contact-stats: kappa(p*) with
  * error bars, one curve per group, Persson's and BGT's values as lines;
  * written as a script, or run through gnuplot into a PNG.

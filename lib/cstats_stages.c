@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* cstats_stages.c - contact-stats' stages: the continuum limit of each
  * surface (Richardson in eps_c), the ensemble average over seeds, and the
  * fractal and thermodynamic limits (contact-stats(1) has the rules).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* elastic.c - k_q table and the FFT applications of K and G = 1/K. */
 #include "elastic.h"
 

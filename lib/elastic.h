@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* elastic.h - the elastic operator of a periodic half space, shared by the
  * contact solvers.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* elastic_free.c - Love's pixel compliance on the padded grid (see
  * elastic_free.h). */
 #include "elastic_free.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* elastic_free.h - the compliance of an isolated patch of elastic half
  * space (free boundaries), by zero padding.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* extrap.c - Richardson extrapolation, Yastrebov estimates, ensembles.
  *
  * Fits are linear least squares in the basis {1, eps^k_1, ...} through

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* extrap.h - limits of discretised results: Richardson extrapolation in a
  * small parameter eps (eps_c = da/lambda_s, eps_f = lambda_s/lambda_r,
  * eps_t = lambda_r/L of Wang & Mueser 2020, sections 2 and 4), the

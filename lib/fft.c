@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fft.c - FFTW plans, threads, wave numbers. */
 #include "fft.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fft.h - real 2D transforms on the periodic grid, around FFTW.
  *
  * A plan pair owns one real buffer (ny rows of nx doubles) and one

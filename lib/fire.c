@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fire.c - FIRE-GFMD: mass-weighted damped dynamics of the elastic surface
  * heights u(r) against a hard wall, relaxed with FIRE (Bitzek et al. 2006,
  * in the FIRE 2.0 ordering of Guenole et al. 2020: mix after the velocity

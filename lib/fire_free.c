@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fire_free.c - FIRE on free boundaries: damped dynamics of the contact
  * pressures sigma >= 0 (not of the surface heights, as fire.c does on a
  * periodic body), with the padded compliance G (elastic_free.h) as the

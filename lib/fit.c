@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit.c - fit of the self-affine model of Eq. 2 to a surface's spectrum
  * (method in fit.h). */
 #include "fit.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fit.h - the self-affine model of Eq. 2 of Wang & Mueser (2020), as
  * surfgen makes it (synth.h), fitted to the spectrum of a surface:
  *   C(q) = C_r (q / q_r)^(-2 - 2H)   for q_r <= q < q_s,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* grid.c - the grid type, its metadata and history. */
 #include "grid.h"
 

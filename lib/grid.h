@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* grid.h - the grid every tool reads and writes.
  *
  * nx by ny points, pixel registered, spacing lx/nx by ly/ny, row-major with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gridcheck.c - the wrap-around ratio and missing points (gridcheck.h). */
 #include "gridcheck.h"
 

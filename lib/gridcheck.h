@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gridcheck.h - is a grid fit for a computation that assumes it periodic,
  * or complete?
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io.c - format detection and dispatch, the buffered input every reader
  * shares, and the checks every grid passes after reading. */
 #include "io.h"

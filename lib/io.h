@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io.h - reading and writing grids in every supported format.
  *
  * Formats: native .surf (text header + float64 LE, see surf(5)), .npy

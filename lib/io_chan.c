@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_chan.c - what the multi-channel readers share: the channel set, unit
  * strings as files state them, and whole-input reads that allocate only
  * as much as the input really holds. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_gsf.c - Gwyddion Simple Field 1.0.
  *
  * "Gwyddion Simple Field 1.0\n", then "Name = Value" lines, then 1 to 4

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_gwy.c - Gwyddion native files (.gwy), read.
  *
  * The file is "GWYP" and one serialised GwyContainer.  A serialised object

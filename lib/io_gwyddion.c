@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_gwyddion.c - every other instrument format, through Gwyddion.
  *
  * Gwyddion reads some 150 vendor formats and converts any of them to its

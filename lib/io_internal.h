@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_internal.h - what the format readers and writers share.
  *
  * Readers never seek: the input may be a pipe.  rc_in wraps a FILE with a

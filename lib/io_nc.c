@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_nc.c - netCDF in the convention of the contact.engineering
  * ecosystem (SurfaceTopography's NC reader and writer).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_npy.c - numpy's .npy format, versions 1.0, 2.0 and 3.0.
  *
  * Written: float64 '<f8', C order, shape (ny, nx): a[j, i] is the value

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_sdf.c - ISO 25178-71 surface data files (SDF), ASCII and binary;
  * also their predecessor (EUNA 15178, "BCR").
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_surf.c - the native format: a text header of "key = value" lines,
  * then nx*ny float64 little-endian values (see surf(5)).  Missing points
  * are NaN values (rc_grid_read_finish turns them into the mask); periodic

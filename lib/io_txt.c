@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_txt.c - whitespace matrix: one grid row (fixed j) per line, x fastest
  * along the line, j = 0 first.  Lines starting with '#' are comments (as
  * numpy.loadtxt has them); "# key = value" comments carry what the other

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* io_x3p.c - ISO 25178-72 XML 3D surface profile files (.x3p).
  *
  * An x3p file is a zip container: main.xml (root ISO5436_2 in the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* iso25178.c - ISO 25178-2 height, hybrid, spatial and material-ratio
  * parameters (definitions in iso25178.h). */
 #include "iso25178.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* iso25178.h - areal surface texture parameters of ISO 25178-2 with their
  * standard names, over the valid points of a grid (g->valid).
  *

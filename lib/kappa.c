@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* kappa.c - erf inversion through GSL's normal quantiles. */
 #include "kappa.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* kappa.h - the proportionality coefficient kappa from a relative contact
  * area, by inverting a_r = erf(sqrt(pi) kappa p* / 2) (Eq. 24 of Wang &
  * Mueser 2020; Eq. 8 with p*_c for kappa_c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* level.c - detrending, scan-line alignment, harmonic filling, cropping
  * and transposing (conventions in level.h). */
 #include "level.h"

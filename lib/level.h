@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* level.h - levelling and repair of measured height maps: detrending,
  * scan-line alignment, harmonic filling of missing points, cropping,
  * transposing (resampling is in resample.h).

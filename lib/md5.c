@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* md5.c - MD5 as specified in RFC 1321, written from the specification. */
 #include "md5.h"
 

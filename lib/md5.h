@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* md5.h - the MD5 message digest (RFC 1321), for the checksums that ISO
  * 25178-72 (x3p) containers carry.  Not for security. */
 #ifndef RC_MD5_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* patches.c - contact patches, labelled run by run (Hoshen-Kopelman on
  * row runs): a union-find over the runs of contact in each row, runs
  * joined when they share a column with a run of the row before, the last

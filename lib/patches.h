@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* patches.h - contact patches: periodic connected components (4-
  * neighbourhood) of a contact mask, labelled run by run (Hoshen-Kopelman
  * on row runs).  rc_contact_patches (contact.h) does a whole grid; the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* png.c - 8-bit RGB previews of grids on libpng (see png.h).
  *
  * The image has square pixels: a grid of spacing dx by dy is resampled to

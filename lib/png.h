@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* png.h - 8-bit PNG previews of grids (o may be NULL: defaults).
  *
  * Heights with a perceptually uniform colormap (computed, viridis-like),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* png_text.c - the 5x7 bitmap font of the PNG previews (see png_text.h). */
 #include "png_text.h"
 

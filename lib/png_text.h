@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* png_text.h - a tiny bitmap font for the labels of PNG previews.
  *
  * Glyphs are 5 pixels wide and 7 tall, drawn at an integer scale (each

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* psd.c - 2D and radial power spectra, spectral moments, height-difference
  * autocorrelation (conventions in psd.h). */
 #include "psd.h"

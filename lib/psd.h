@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* psd.h - power spectrum and height-difference autocorrelation.
  *
  * Convention (DESIGN.md, Eq. 7 of Wang & Mueser 2020):

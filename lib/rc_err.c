@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* rc_err.c - error messages and checked allocation. */
 #include "rc_err.h"
 

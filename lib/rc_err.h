@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* rc_err.h - how the library reports errors.
  *
  * Every fallible library function takes an rc_err * as its last argument,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* resample.h - a height map on a new grid spacing.
  *
  * Periodic grids: spectral (trigonometric) interpolation.  The new point

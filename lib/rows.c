@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* rows.c - TSV and JSON result rows into one table (see rows.h). */
 #include "rows.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* rows.h - read result rows (TSV with one header line, or a JSON array of
  * flat objects) from any number of files into one table of named columns.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver.c - options, dispatch, state and accessors of the contact solvers.
  *
  * Convergence (one measure for both methods).  A method stops when the

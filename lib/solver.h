@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver.h - frictionless, non-adhesive contact of a linearly elastic
  * half space (above) on a rigid indenter of heights h (below), either
  * periodic (the grid is one cell of an infinite periodic surface) or with

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_approach.c - displacement control: the mean pressure at which the
  * approach (rc_solver_approach, solver.h) takes a prescribed value.
  *

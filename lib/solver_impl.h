@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_impl.h - the state behind rc_solver, shared by solver.c (options,
  * dispatch, accessors, convergence measure) and the two methods (fire.c,
  * pkcg.c).  Private to the library. */

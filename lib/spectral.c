@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* spectral.c - spectral gradient, Laplacian, rms gradient. */
 #include "spectral.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* spectral.h - derivatives of a periodic grid through the FFT.
  *
  * Exact for band-limited periodic data.  Odd derivatives zero the Nyquist

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stats.c - height statistics, Phi1..Phi9, gradient tensor by height. */
 #include "stats.h"
 

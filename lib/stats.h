@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stats.h - height statistics and the structural parameters Phi1..Phi9.
  *
  * Wang & Mueser (2020), section 3.2, with three printed equations

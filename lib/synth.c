@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* synth.c - surface synthesis: self-affine random roughness (Eqs. 2, 3 of
  * Wang & Mueser 2020), harmonic indenters (Eq. 5), sine, egg box, flat.
  *

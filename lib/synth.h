@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* synth.h - surface synthesis (surfgen's library side).
  *
  * Self-affine random roughness with the spectrum of Eq. (2) of Wang &

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* table.c - TSV/JSON result rows. */
 #include "table.h"
 

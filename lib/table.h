@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* table.h - result rows written as TSV (one header line) or JSON.
  *
  * Build a row with rc_row_num/int/str, then rc_table_write it.  The first

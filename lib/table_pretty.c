@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* table_pretty.c - the aligned, rounded view of a result table for a
  * terminal (see table.h, rc_table_pretty).
  *

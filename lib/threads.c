@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* threads.c - default thread count and OpenMP wait policy (see threads.h). */
 #include "threads.h"
 

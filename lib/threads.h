@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* threads.h - how many threads to use when the user did not say, and how
  * idle OpenMP threads wait.
  *

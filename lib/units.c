@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* units.c - length units and the conversion of a grid to one of them
  * (see units.h). */
 #include "units.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* units.h - length units, and bringing a grid to one length unit.
  *
  * Units are SI metres with a prefix: m, mm, um (also spelled µm with the

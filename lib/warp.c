@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* warp.c - warping, flipping, carving and renormalising height maps. */
 #include "warp.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* warp.h - height transformations of surfwarp: warping (Eq. 4 of Wang &
  * Mueser 2020), flipping, carving the non-contact zone, renormalising.
  *

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # common.mk - rules shared by the studies (and bench/accuracy).
 #
 # Every intermediate is a file whose name says how it was made, so make

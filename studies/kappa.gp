@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # kappa.gp - kappa and kappa_c vs p* with error bars, one curve per
 # "curve" value; gnuplot -e "data='…'; out='…'; curves='…'; title='…'" kappa.gp
 set terminal pngcairo size 1100,500 noenhanced

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # kappa.mk - kappa(p*) and kappa_c(p*) of self-affine surfaces, the
 # machinery of Figures 4, 7 and 8 (included by kappa-pressure, anisotropy,
 # warping after common.mk).  For every Hurst exponent in HS, schedule in

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # run.sh - run every C test binary and every end-to-end script, add up
 # their "N passed, N failed[, N skipped]" lines and end with the total
 # (", N skipped" only when a test could not run here; SKIP lines say why).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_analysis.c - levelling, repair, resampling, windowed and 1D
  * spectra, the non-periodic ACF, ISO 25178 parameters and the self-affine
  * fit (lib/level.c, resample.c, psd.c, iso25178.c, fit.c).

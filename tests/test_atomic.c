@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_atomic.c - outputs never replace what is not a regular file
  * (atomic.h), are checked before work, leave no temporary behind; and any
  * command line or accepted metadata value survives a .surf round trip

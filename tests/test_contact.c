@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_contact.c - contact analysis: counts, contact line, periodic
  * patches, A_c, Yastrebov's estimate, gradients over the contact, kappa. */
 #include <math.h>

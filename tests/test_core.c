@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_core.c - grid metadata, number formatting, wave numbers, FFT
  * normalisation, atomic writes, tables. */
 #include <math.h>

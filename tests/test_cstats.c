@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_cstats.c - contact-stats' computation (lib/cstats) on synthetic
  * result rows with closed-form limits: grouping by seed, resolution and H,
  * the order continuum -> ensemble -> fractal, every printed estimator, the

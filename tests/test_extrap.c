@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_extrap.c - Richardson extrapolation, Yastrebov estimates, ensemble
  * statistics and the Eq. 27 schedule against closed forms. */
 #include <math.h>

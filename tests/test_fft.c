@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_fft.c - the FFT layer's thread count, effort policy, FFTW wisdom
  * and in-place c2r plan. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_formats.c - the measured-data formats: x3p and netCDF round trips
  * (bit-exact heights, sizes, units, periodic flag, mask), .gwy files built
  * here from the documented serialisation (channels, titles, units, masks,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_free.c - free boundaries (lib/elastic_free.c, the CG on them) and
  * displacement control (lib/solver_approach.c) against Hertz and
  * Boussinesq without periodic images; the non-wrapping contact analysis.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_fuzz_replay.c - replay the fuzzing regression corpus in `make check`.
  *
  * Every file under tests/data/fuzz/read/ and tests/data/fuzz/rows/ goes

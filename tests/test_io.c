@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_io.c - the grid formats: round trips, pipes, hand-made numpy files,
  * golden files, and every reader fed broken input. */
 #include <float.h>

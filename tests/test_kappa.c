@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_kappa.c - erf inversion round trips and the documented limits. */
 #include <math.h>
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_measured.c - what a grid knows besides its values: units and their
  * conversion, the periodic flag and the wrap-around check, missing points;
  * kept by every format that can, and the text reader's Gwyddion header and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_png.c - PNG previews decoded back with libpng: size, aspect,
  * colours of the extremes, mask and overlay colours, log scale,
  * downsampling; the colormap's lightness; the annotations (colour bar,

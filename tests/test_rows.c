@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_rows.c - the result-row reader: TSV and JSON, union of columns,
  * file:line of every row, precise errors, lenient skipping, and random
  * garbage (every outcome must be a clean 0 or -1 with a message). */

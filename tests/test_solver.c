@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_solver.c - the two contact solvers against exact solutions
  * (Westergaard, full contact of a cosine, egg-box, Hertz), against each
  * other, and their invariants. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_stats.c - Phi1..Phi9, moments, masks, height bins, C(q), ACF.
  *
  * Exact tests on cosines and egg-boxes; identities and invariances on

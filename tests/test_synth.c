@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_synth.c - surface synthesis: the spectrum of Eq. 2, normalisation,
  * phase determinism (grid refinement, lambda_s), Peklenik anisotropy,
  * harmonic/sine/egg-box values, parameter checks, metadata. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_table_pretty.c - the terminal view of result tables (lib/
  * table_pretty.c): exact text for a small table in columns and
  * transposed, rounding, whole integers, alignment, control characters,

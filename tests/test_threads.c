@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_threads.c - the default thread count (lib/threads.h): one thread
  * inside a parallel make, OMP_NUM_THREADS and -j above that; the wait
  * policy set before libgomp started. */

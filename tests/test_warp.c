@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_warp.c - warping (direction, identity, monotonicity, stability at
  * large |w|), flipping, carving, the periodic distance transform,
  * renormalisation. */

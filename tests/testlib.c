@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* testlib.c - counters and messages for the C tests. */
 #define _GNU_SOURCE
 #include "testlib.h"

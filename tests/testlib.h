@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* testlib.h - GSL-style checks for the C tests.
  *
  * Each check prints nothing when it passes (unless TEST_VERBOSE is set)

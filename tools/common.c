@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* common.c - shared tool plumbing (see common.h). */
 #include "common.h"
 

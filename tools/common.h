@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* common.h - what every tool does the same way: messages, the shared
  * options, number parsing with error collection, grid input and output.
  *

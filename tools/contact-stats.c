@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* contact-stats - a_r, kappa and kappa_c of gfmd-solve result rows taken to
  * the continuum limit (Richardson in eps_c), averaged over seeds, and
  * optionally to the fractal and thermodynamic limits: options, input and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve - contact of a linearly elastic half space on a rigid rough
  * indenter, one result row per pressure (see gfmd-solve(1)). */
 #include <errno.h>

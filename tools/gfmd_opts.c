@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd_opts.c - gfmd-solve's options (see gfmd_opts.h). */
 #include "gfmd_opts.h"
 

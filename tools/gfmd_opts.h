@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd_opts.h - gfmd-solve's options, shared by the serial tool and its MPI
  * build: one table, one parser, one set of checks, so that a command line
  * means the same in both (the MPI build then refuses what it lacks). */

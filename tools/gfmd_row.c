@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd_row.c - gfmd-solve's result row (see gfmd_row.h). */
 #include "gfmd_row.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd_row.h - the result row of one gfmd-solve pressure, the same columns
  * in the serial tool and its MPI build (gfmd-solve(1), RESULT ROWS). */
 #ifndef RC_GFMD_ROW_H

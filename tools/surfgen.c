@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfgen - make a height map: self-affine random roughness (Eqs. 2, 3 of
  * Wang & Mueser 2020), harmonic indenters (Eq. 5), sine, egg box, flat;
  * or a periodic self-affine surface like a measured one (--like). */

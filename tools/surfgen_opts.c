@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfgen_opts.c - surfgen's surface options (see surfgen_opts.h). */
 #include "surfgen_opts.h"
 

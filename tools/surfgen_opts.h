@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfgen_opts.h - surfgen's surface options, shared by the serial tool and
  * its MPI build so that one command line means one surface in both. */
 #ifndef RC_SURFGEN_OPTS_H

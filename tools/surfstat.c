@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfstat - statistics of a height map: rms height and gradient, Nayak,
  * the structural parameters Phi1..Phi9 (Wang & Mueser 2020, section 3.2,
  * corrected as documented in surfstat(1)), C(q) (windowed on finite

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfwarp - transform a height map: levelling and repair of measured
  * maps (detrending, scan-line alignment, harmonic filling, cropping,
  * resampling, transposing; in command-line order), then warping (Eq. 4 of

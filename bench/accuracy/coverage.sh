@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # coverage.sh - are contact-stats' error bars calibrated?
 #
 # For SEEDS independent surfaces (H 0.8, lambda_r/L = 1/2, lambda_s/L =

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # estimators.awk - error and cost of each a_r estimator, one row per
 # (estimator, eps_c).  Files: ref.tsv (contact-stats --per-seed: the
 # reference a_r of each seed), rows.tsv (gfmd-solve rows), pairs.tsv

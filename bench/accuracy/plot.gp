@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # plot.gp - error of a_r against wall time;
 #   gnuplot -e "table='…'; tolerance='…'; out='…'; ref_eps=E" plot.gp
 # ref_eps: the coarsest eps_c of the reference's grids.  An estimate that

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # tolerance.awk - error and cost of gfmd-solve's --tol, per method.
 # Files: ref.tsv (reference a_r per seed), then one gfmd-solve row per
 # (seed, method, tol); tol_ref (-v) names the tightest tolerance, whose

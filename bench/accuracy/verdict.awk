@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # verdict.awk - the cheapest estimator reaching each accuracy target.
 # Files: table.tsv, tolerance.tsv.  Cost is the mean wall time over seeds.
 # -v ref_eps=E: the coarsest eps_c of the reference's grids; an estimator

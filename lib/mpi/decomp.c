@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* decomp.c - slab decomposition, reductions and MPI-IO of .surf files for
  * the MPI build (decomp.h). */
 #include "decomp.h"

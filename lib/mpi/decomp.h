@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* decomp.h - the MPI build's distribution: FFTW-MPI's slab decomposition
  * (each rank owns a contiguous range of rows j, x fastest within a row),
  * global reductions, and MPI-IO of the native .surf format.  Everything

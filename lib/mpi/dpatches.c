@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dpatches.c - contact patches of a row-distributed mask.
  *
  * Each rank labels its own rows (lib/patches.c: periodic in x, joined

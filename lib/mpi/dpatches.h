@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dpatches.h - contact patches of a mask distributed by rows over the
  * ranks, without gathering it (lib/mpi/dpatches.c). */
 #ifndef RC_MPI_DPATCHES_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
  * (lib/mpi/dsolver.h); the iteration itself is lib/fire.c. */
 #include "mpi/dsolver.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.h - the contact solver on this rank's rows (make MPI=1).
  *
  * rc_mpi_solver_new is rc_solver_new for a distributed indenter: height

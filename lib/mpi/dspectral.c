@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dspectral.c - spectral sums over a distributed grid (dspectral.h). */
 #include "mpi/dspectral.h"
 

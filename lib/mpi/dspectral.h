@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dspectral.h - spectral sums over a distributed grid (make MPI=1). */
 #ifndef RC_MPI_DSPECTRAL_H
 #define RC_MPI_DSPECTRAL_H

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # harmonic.awk - gfmd-solve rows of harmonic indenters -> kappa_c against
 # Eq. 28, kappa_c(n) = sqrt(pi/n) Gamma(n/2 + 3/2) / Gamma(n/2 + 1), and the
 # a_r that Eq. 8 predicts with it: erf(sqrt(pi) kappa_c(n) p_c*/2),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # harmonic.gp - kappa_c vs p* against Eq. 28; a_r error of the prediction
 set terminal pngcairo size 1100,500 noenhanced
 set output out

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # summary.awk - per exponent: kappa_c at the lowest pressure against Eq. 28,
 # the largest |error| of the Eq. 8 + Eq. 28 prediction of a_r, and the
 # smallest a_r at which that error exceeds 5% and 25% ("none" if never).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # nayak.gp - kappa vs Nayak parameter per H and spectrum type
 set terminal pngcairo size 800,550 noenhanced
 set output out

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # summary.awk - ratios carved/base and flipped/base over seeds: mean and
 # standard error, plus the largest |a_r change| of carving (which should be
 # zero up to the solver tolerance).

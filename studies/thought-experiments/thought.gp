@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # thought.gp - what carving and flipping do to a_r and the Nayak parameter
 set terminal pngcairo size 800,500 noenhanced
 set output out

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # heights.gp - height histogram and gbar(h) per warp exponent
 set terminal pngcairo size 1100,500 noenhanced
 set output out

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # analysis.sh - measured-data analysis end to end: levelling steps in
 # order, the periodic flag in the header, crop/transpose/resample
 # identities, 1D spectra of profiles independent of the strip width, the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Bad input everywhere: every grid reader (surfwarp, surfstat, gfmd-solve,
 # surfstat --mask, gfmd-solve --init, surfwarp --carve) fed broken files,
 # from a path and from a pipe; every tool fed out-of-range options; the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # build-deps.sh - a missing build dependency stops make before compiling,
 # naming the Debian packages to install (not a compiler error on fftw3.h).
 . "$RC_TOP/tests/e2e/lib.sh"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # checkpoint.sh - gfmd-solve --checkpoint / --checkpoint-every / --resume:
 # an interrupted sweep, resumed with the command its message prints,
 # gives the rows of an uninterrupted run.

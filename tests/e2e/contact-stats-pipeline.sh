@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # surfgen -> gfmd-solve -> contact-stats on one real surface at three
 # resolutions: the continuum extrapolation must beat the finest raw value.
 . "$RC_TOP/tests/e2e/lib.sh"

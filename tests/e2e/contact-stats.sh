@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # contact-stats on synthetic result rows with known limits: grouping by
 # resolution and by seed, the three estimators, kappa and its error, the
 # fractal and thermodynamic limits, --schedule, --json, bad input.

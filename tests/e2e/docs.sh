@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # docs.sh - examples printed in the manual pages are what the tools do.
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
@@ -95,4 +96,16 @@ man1_b=$(tr '\n' ' ' < "$M/man1/gfmd-solve.1" | grep -o 'Memory is about [0-9]* 
 man7_b=$(grep '^\.It gfmd-solve (FIRE or CG) Ta' "$M/man7/roughcontact.7" | grep -o '[0-9][0-9]*$')
 check "gfmd-solve's bytes per point agree (README $readme_b, gfmd-solve(1) $man1_b, roughcontact(7) $man7_b)" \
     [ -n "$readme_b" ] && [ "$readme_b" = "$man1_b" ] && [ "$man1_b" = "$man7_b" ]
+# The licence: every source, script and build file says it in an SPDX
+# line near its top, every manual page has a LICENSE section, and the
+# text is in the tree.
+check "LICENSE is the GPL version 3" grep -q "GNU GENERAL PUBLIC LICENSE" "$RC_TOP/LICENSE"
+missing=$(cd "$RC_TOP" && for f in lib/*.[ch] lib/mpi/*.[ch] tools/*.[ch] tools/mpi/*.[ch] \
+    tests/*.[ch] tests/e2e/*.sh bench/*.c bench/*.sh Makefile studies/*/Makefile; do
+	[ -f "$f" ] || continue
+	head -n 3 "$f" | grep -q 'SPDX-License-Identifier: GPL-3.0-or-later' || echo "$f"
+done)
+check "every source file has an SPDX line (missing: $(echo $missing | head -c 200))" [ -z "$missing" ]
+nolic=$(for m in "$M"/man*/*.[1-9]; do grep -q '^\.Sh LICENSE' "$m" || basename "$m"; done)
+check "every manual page has a LICENSE section (missing: $(echo $nolic))" [ -z "$nolic" ]
 summary

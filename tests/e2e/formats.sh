@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # formats.sh - the measured-data formats against real clients: Gwyddion
 # opens the x3p we write and its .gwy comes back as our grid; Gwyddion's
 # own .gwy files (one and two channels) read with the right channel, size

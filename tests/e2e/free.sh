@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # free.sh - gfmd-solve --boundary free and --approach end to end: Hertz
 # without periodic images, load and displacement control as inverses,
 # both methods, the rows, the refusals, and a pipeline into contact-stats.

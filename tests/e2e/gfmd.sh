@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # gfmd.sh - gfmd-solve against exact solutions (Westergaard, Hertz and the
 # harmonic indenters of Eq. 28, the egg box), the second method, the
 # output fields, Richardson behaviour in dx, and its exit codes.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hard.sh - hard cases for gfmd-solve: extreme Hurst exponents, Peklenik
 # grooves, strong warping, tiny and near-full contact, odd, prime, line,
 # 2 x 2 and flat grids, a single spike, long warm-started sweeps, restarts,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # make install puts a usable library in place: a program outside the
 # project (tests/install/consumer.c) is compiled against the installed
 # copy through pkg-config alone, runs, and its results are checked; the

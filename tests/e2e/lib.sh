@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # lib.sh - helpers for the end-to-end shell tests; source it.
 # Tools are found in $RC_BIN (set by tests/run.sh); each check counts one
 # test and prints FAIL lines with observed and expected values.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # measured.sh - measured data through the tools: units converted before
 # any gradient (a um x nm map gives the gbar and a_r of the same map in
 # metres), non-length channels refused, the wrap-around warning, missing

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # numbers.sh - no wrong number passes silently: unconverged rows are
 # refused by contact-stats, non-finite results never leave a tool with
 # exit 0, option messages name the option that is wrong.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # outputs.sh - at most one output goes to standard output, binary never to
 # a terminal; the refusal is a usage error (exit 2) that writes nothing.
 # An output may be its input where it is the same kind of thing (surfwarp

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # pretty.sh - tables on a terminal: aligned and rounded when standard
 # output is a terminal (a pty made by script(1)) or with --pretty; the
 # exact TSV when piped, byte for byte what -o writes.

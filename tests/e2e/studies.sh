@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # studies.sh - one tiny instance of each study pipeline (studies/*/Makefile):
 # each runs end to end into a temporary OUT, its qualitative result holds,
 # and a second make has nothing to do.  Grids of 16^2 .. 256x16, one seed.

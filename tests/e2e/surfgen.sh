@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # surfgen end to end: output files and pipes, header metadata, seeds and
 # grid refinement through the tool, PNG, usage errors reported at once.
 . "$RC_TOP/tests/e2e/lib.sh"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # surfstat.sh - surfstat end to end: scalar row on exact surfaces, the
 # spectrum's sum rule, masks, tables, side outputs, exit codes.
 . "$RC_TOP/tests/e2e/lib.sh"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # surfwarp.sh - surfwarp end to end: identity, direction of w, header,
 # flip, carve, renormalisation, pipelines, exit codes.
 . "$RC_TOP/tests/e2e/lib.sh"

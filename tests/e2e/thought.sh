@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # thought.sh - the paper's first thought experiment through the tools:
 # carving and roughening the non-contact zone (surfwarp --carve ...
 # --carve-rough) leaves the contact of the original surface at the same

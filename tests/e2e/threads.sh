@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # threads.sh - results do not depend on the thread count: every tool run
 # with -j 1 and -j 2 (and OMP_NUM_THREADS instead of -j) must agree.
 #   surfgen: bit for bit (its reductions are summed in a fixed order and

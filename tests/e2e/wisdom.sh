@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # wisdom.sh - FFT planning options: --fft-effort, --wisdom FILE, RC_WISDOM.
 # A measured plan computes the same transform as the estimated one, so the
 # surfaces agree to round-off (1e-12 of the largest height: a 64^2

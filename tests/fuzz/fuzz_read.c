@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fuzz_read.c - libFuzzer harness for every grid reader.
  *
  * The input goes through the format detector twice: from memory (a stream

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* fuzz_rows.c - libFuzzer harness for contact-stats' row parser (rows.h).
  *
  * The input is parsed strictly, leniently, a second time into the same

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # run.sh - run every libFuzzer harness for a bounded time (make fuzz).
 #   tests/fuzz/run.sh FUZZDIR SECONDS [BINDIR]
 # FUZZDIR holds the built harnesses fuzz_<name>; each starts from a seed

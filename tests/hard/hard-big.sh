@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # hard-big.sh - the hard-case matrix of tests/e2e/hard.sh on grids 2 and
 # 4 times finer in each direction (minutes, not seconds), for make
 # check-hard.  The cases and their assertions are hard.sh's; tolerances

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* consumer.c - a program outside the project, built against the installed
  * library through pkg-config (tests/e2e/install.sh): it generates a
  * surface, checks its rms height against an identity computed here, writes

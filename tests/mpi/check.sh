@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
 # check.sh - the MPI builds (make MPI=1) against the serial tools, with 1, 2
 # and 3 ranks (make check-mpi).   tests/mpi/check.sh SERIAL_BIN MPI_BIN
 # Ends with "N passed, N failed".

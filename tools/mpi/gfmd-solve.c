@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve (MPI build) - gfmd-solve(1) on many ranks: the indenter is
  * read from a .surf file with MPI-IO, each rank solves its rows with the
  * library's FIRE-GFMD (lib/fire.c compiled with -DRC_MPI: FFTW-MPI

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* mpitool.c - start-up and checks shared by the MPI tools (mpitool.h). */
 #include "mpitool.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* mpitool.h - what the MPI tools (make MPI=1) share: start-up, so that
  * every rank runs the same tools/common.h code but only rank 0 speaks, and
  * the check that a field path is .surf (MPI-IO writes only that format). */

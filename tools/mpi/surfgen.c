@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
 /* surfgen (MPI build) - a surface made by all ranks and written to a .surf
  * file with MPI-IO.  Self-affine: each rank fills its rows of the
  * half-complex spectrum (the modes are a function of the seed and the wave
