@@ -121,9 +121,10 @@ rc_grid_free(rc_grid *g)
 }
 
 rc_grid *
-rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
+rc_grid_new_like(const rc_grid *g, size_t nx, size_t ny, double lx, double ly,
+    rc_err *err)
 {
-	rc_grid *c = rc_grid_new(g->nx, g->ny, g->lx, g->ly, err);
+	rc_grid *c = rc_grid_new(nx, ny, lx, ly, err);
 
 	if (c == NULL)
 		return NULL;
@@ -136,6 +137,19 @@ rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
 	for (size_t i = 0; i < g->nhistory; i++)
 		if (rc_grid_history_add(c, g->history[i], err) != 0)
 			goto fail;
+	return c;
+fail:
+	rc_grid_free(c);
+	return NULL;
+}
+
+rc_grid *
+rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
+{
+	rc_grid *c = rc_grid_new_like(g, g->nx, g->ny, g->lx, g->ly, err);
+
+	if (c == NULL)
+		return NULL;
 	if (copy_values) {
 		memcpy(c->z, g->z, rc_grid_size(g) * sizeof(double));
 		if (g->valid != NULL) {

@@ -69,6 +69,10 @@ void rc_grid_free(rc_grid *g);
  * the caller.  Saves a copy when a result is computed in place. */
 rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
     rc_err *err);
+/* A zeroed grid of another shape with g's kind, units, periodic flag,
+ * metadata and history (no mask). */
+rc_grid *rc_grid_new_like(const rc_grid *g, size_t nx, size_t ny, double lx,
+    double ly, rc_err *err);
 /* Same shape, units, periodic flag, metadata and history; values and the
  * missing-point mask copied if copy_values. */
 rc_grid *rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err);

@@ -348,30 +348,18 @@ rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
 	return rc_grid_meta_setf(g, "filled_points", err, "%zu", nmiss);
 }
 
-/* A new grid of nx x ny with g's kind, units, metadata and history. */
+/* A new grid of nx x ny like g, with a mask if g has one. */
 static rc_grid *
 like(const rc_grid *g, size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
-	rc_grid *c = rc_grid_new(nx, ny, lx, ly, err);
+	rc_grid *c = rc_grid_new_like(g, nx, ny, lx, ly, err);
 
-	if (c == NULL)
+	if (c != NULL && g->valid != NULL &&
+	    (c->valid = rc_calloc(nx * ny, 1, err)) == NULL) {
+		rc_grid_free(c);
 		return NULL;
-	c->kind = g->kind;
-	memcpy(c->unit, g->unit, sizeof(c->unit));
-	memcpy(c->z_unit, g->z_unit, sizeof(c->z_unit));
-	c->periodic = g->periodic;
-	if (rc_grid_meta_copy(c, g, err) != 0)
-		goto fail;
-	for (size_t i = 0; i < g->nhistory; i++)
-		if (rc_grid_history_add(c, g->history[i], err) != 0)
-			goto fail;
-	if (g->valid != NULL &&
-	    (c->valid = rc_calloc(nx * ny, 1, err)) == NULL)
-		goto fail;
+	}
 	return c;
-fail:
-	rc_grid_free(c);
-	return NULL;
 }
 
 rc_grid *

@@ -11,29 +11,6 @@
 
 #include "fft.h"
 
-/* A new grid with g's kind, units, periodic flag, metadata and history. */
-static rc_grid *
-like(const rc_grid *g, size_t nx, size_t ny, double lx, double ly, rc_err *err)
-{
-	rc_grid *c = rc_grid_new(nx, ny, lx, ly, err);
-
-	if (c == NULL)
-		return NULL;
-	c->kind = g->kind;
-	memcpy(c->unit, g->unit, sizeof(c->unit));
-	memcpy(c->z_unit, g->z_unit, sizeof(c->z_unit));
-	c->periodic = g->periodic;
-	if (rc_grid_meta_copy(c, g, err) != 0)
-		goto fail;
-	for (size_t i = 0; i < g->nhistory; i++)
-		if (rc_grid_history_add(c, g->history[i], err) != 0)
-			goto fail;
-	return c;
-fail:
-	rc_grid_free(c);
-	return NULL;
-}
-
 /* Index of signed mode k on an axis of n points; -1 if it is dropped. */
 static long
 mode_index(long k, size_t n, size_t nmin)
@@ -68,7 +45,7 @@ spectral(const rc_grid *g, size_t nx, size_t ny, rc_err *err)
 		}
 	}
 	rc_fft_backward(&out);
-	if ((c = like(g, nx, ny, g->lx, g->ly, err)) != NULL)
+	if ((c = rc_grid_new_like(g, nx, ny, g->lx, g->ly, err)) != NULL)
 		memcpy(c->z, out.real, nx * ny * sizeof(double));
 out:
 	rc_fft_free(&in);
@@ -128,7 +105,7 @@ splines(const rc_grid *g, double dx, double dy, rc_err *err)
 	if ((tmp = rc_malloc(nx * g->ny * sizeof(double), err)) == NULL ||
 	    (xs = rc_malloc(nmax * sizeof(double), err)) == NULL ||
 	    (ys = rc_malloc(nmax * sizeof(double), err)) == NULL ||
-	    (c = like(g, nx, ny, (double)nx * dx, (double)ny * dy, err)) == NULL)
+	    (c = rc_grid_new_like(g, nx, ny, (double)nx * dx, (double)ny * dy, err)) == NULL)
 		goto fail;
 	for (size_t j = 0; j < g->ny; j++) {
 		if (g->nx < 3)
