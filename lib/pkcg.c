@@ -187,7 +187,7 @@ static void
 initial_pressure(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
-	double sum = 0, *sigma = s->sigma;
+	double *sigma = s->sigma;
 
 	if (!s->have_sigma && s->have_u && s->free_bc) {
 		/* No K to find the pressure u needs: start uniform on the
@@ -204,17 +204,7 @@ initial_pressure(rc_solver *s, double p)
 			sigma[k] = s->u[k] <= s->height[k] && v > 0 ? v : 0;
 		}
 	}
-	if (s->have_sigma || s->have_u)
-		for (k = 0; k < n; k++)
-			sum += sigma[k];
-	if (!(sum > 0)) {
-		for (k = 0; k < n; k++)
-			sigma[k] = p;
-		sum = p * (double)n;
-	}
-	for (k = 0; k < n; k++)
-		sigma[k] *= p * (double)n / sum;
-	s->have_sigma = 1;
+	rc__sigma_to_load(s, p);
 }
 
 int

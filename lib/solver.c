@@ -241,6 +241,27 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	return r;
 }
 
+/* Scale the warm-start pressures to mean p (uniform p when they carry no
+ * load: a first solve, or a state without contact). */
+void
+rc__sigma_to_load(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double sum = 0, *sigma = s->sigma;
+
+	if (s->have_sigma || s->have_u)
+		for (k = 0; k < n; k++)
+			sum += sigma[k];
+	if (!(sum > 0)) {
+		for (k = 0; k < n; k++)
+			sigma[k] = p;
+		sum = p * (double)n;
+	}
+	for (k = 0; k < n; k++)
+		sigma[k] *= p * (double)n / sum;
+	s->have_sigma = 1;
+}
+
 double
 rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 {

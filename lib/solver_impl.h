@@ -36,6 +36,8 @@ struct rc_solver {
 /* Both methods' convergence measure (see solver.c) from the sum over all
  * points of (p + K u - sigma)^2 and the sum of sigma. */
 double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma);
+/* Warm-start pressures scaled to mean p (solver.c). */
+void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
