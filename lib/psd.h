@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* psd.h - power spectrum and height-difference autocorrelation.
  *
- * Convention (DESIGN.md, Eq. 7 of Wang & Mueser 2020):
+ * Convention (Eq. 7 of Wang & Mueser 2020; roughcontact(7), CONVENTIONS):
  *   C(q) = (2 pi)^-2 int d^2r <h(0) h(r)> exp(-i q.r),
  * so <h^2> = int d^2q C(q) and gbar^2 = int d^2q q^2 C(q).  On the grid,
  * with h_k the unnormalised DFT, A = lx ly, N = nx ny:

@@ -8,7 +8,7 @@
  * The elastic surface height u(r) obeys u >= h; gap g = u - h; the contact
  * pressure sigma(r) >= 0 acts only where g = 0, and its mean equals the
  * applied pressure.  Each Fourier mode of u has stiffness q E* / 2 per unit
- * area (Wang & Mueser 2020, section 2; DESIGN.md).  Two independent
+ * area (Wang & Mueser 2020, section 2; gfmd-solve(1)).  Two independent
  * methods share this interface: FIRE-GFMD (Zhou, Moseler & Mueser 2019)
  * and Polonsky & Keer's constrained conjugate gradient (1999).
  *
