@@ -119,7 +119,7 @@ PY
 	RC_GWYDDION=/nonexistent/gwyddion check_status "without Gwyddion: exit 1" 1 surfstat v.nrrd
 	check "without Gwyddion: names the package" grep -q 'Debian package gwyddion' "$T_TMP/stderr"
 else
-	echo "gwyddion not installed: the Gwyddion client tests are skipped"
+	skip 23 "gwyddion not installed: the Gwyddion client tests (apt-get install gwyddion)"
 fi
 
 # netCDF written by the netCDF library (ncgen) in SurfaceTopography's
@@ -151,5 +151,7 @@ if command -v ncgen >/dev/null 2>&1; then
 	surfwarp -o got.txt st.nc
 	check "ncgen file: values where they belong (rows y, x along)" \
 	    [ "$(grep -v '^#' got.txt | tr '\n' ' ')" = "1 3 5 2 4 6 " ]
+else
+	skip 3 "ncgen not installed: netCDF written by the netCDF library (apt-get install netcdf-bin)"
 fi
 summary

@@ -84,10 +84,10 @@ print(struct.unpack("<d", d[i:i + 8])[0], d[u:d.find(b"\0", u)].decode(),
 		check "... in m" [ "$(awk '{ print $2 }' gwy.txt)" = m ]
 		check_rel "... and the first height in m" "$(awk '{ print $3 }' gwy.txt)" "$(awk -v z="$first" 'BEGIN { printf "%.17g", z * 1e-6 }')" 1.2e-7
 	else
-		echo "note: gwyddion --convert-to-gwy failed here: Gwyddion client check skipped"
+		skip 2 "gwyddion --convert-to-gwy failed here: Gwyddion client check"
 	fi
 else
-	echo "note: no gwyddion: Gwyddion client check skipped"
+	skip 3 "gwyddion not installed: Gwyddion client check (apt-get install gwyddion)"
 fi
 
 # --- periodicity --------------------------------------------------------------
@@ -161,7 +161,7 @@ np.save("nan.npy", a)
 	check_status "a NaN in a numpy array is a missing point" 1 surfstat -q nan.npy
 	check "... 1 of 16" grep -q "1 of 16 points are missing" "$T_TMP/stderr"
 else
-	echo "note: no python3 with numpy: numpy-written arrays not tested"
+	skip 8 "no python3 with numpy: arrays numpy writes (apt-get install python3-numpy)"
 fi
 
 summary
