@@ -273,6 +273,27 @@ bad_files(void)
 	refused("checkpoint.row.1", NULL, "row.1");
 	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
 
+	/* The grid itself: a height field, a missing (NaN) value. */
+	for (int t = 0; t < 2; t++) {
+		rc_grid *g2 = rc_grid_read(tmp(0, "a.ck"), NULL, &err);
+
+		if (g2 == NULL)
+			break;
+		if (t == 0)
+			g2->kind = RC_KIND_HEIGHT;
+		else
+			g2->z[5] = NAN;
+		rc_grid_write(g2, tmp(1, "g.ck"), RC_FMT_SURF, &err);
+		rc_grid_free(g2);
+		u = (rc_grid *)1;
+		test_int(rc_checkpoint_read(&c, &u, tmp(1, "g.ck"), &err), -1,
+		    "%s: refused (%s)", t ? "a NaN displacement" : "kind height",
+		    err.msg);
+		test_true(u == NULL && strstr(err.msg, t ? "not finite" :
+		    "displacement") != NULL, "%s: no grid, message says why",
+		    t ? "NaN" : "height");
+	}
+
 	/* A truncated file (cut inside the values, and inside the header). */
 	fp = fopen(tmp(0, "a.ck"), "rb");
 	fseek(fp, 0, SEEK_END);
