@@ -30,9 +30,11 @@ static int
 by_output(const void *a, const void *b)
 {
 	const struct est *x = a, *y = b;
-	int k = strcmp(x->key, y->key);
+	int k;
 
-	if (k)
+	if (x->curve_row != y->curve_row)
+		return x->curve_row < y->curve_row ? -1 : 1;
+	if ((k = strcmp(x->key, y->key)) != 0)
 		return k;
 	return (x->p_star > y->p_star) - (x->p_star < y->p_star);
 }
@@ -52,7 +54,8 @@ order_output(struct ctx *c, struct est *e, size_t n)
 		for (size_t j = 0; j < n; j++)
 			if (e[j].row < first && strcmp(k[i], k[j]) == 0)
 				first = e[j].row;
-		e[i].key = rc__cs_pool_printf(c, "%020zu%s", first, k[i]);
+		e[i].curve_row = first;
+		e[i].key = k[i];
 	}
 	qsort(e, n, sizeof(*e), by_output);
 }
@@ -222,14 +225,16 @@ make_output(struct ctx *c, const struct est *e, size_t n)
 		rc__cs_fail(c, "out of memory (%zu rows)", n);
 	for (size_t i = 0; i < n; i++) {
 		struct derived d = derive(&e[i]);
+		int new_curve = i == 0 || e[i].curve_row != e[i - 1].curve_row;
+
 		if (e[i].a_r < 0 || e[i].a_r > 1)
 			rc__cs_warn(c, RC_CSTATS_WARN_CLAMPED,
 			    "%s: extrapolated a_r = %.6g "
 			    "left [0, 1]; clamped", rc__cs_group_name(c,
 			    e[i].row, e[i].p_star, 0), e[i].a_r);
-		if (i > 0 && strncmp(e[i].key, e[i - 1].key, 20) != 0)
+		if (i > 0 && new_curve)
 			res->ncurves++;
-		if (i == 0 || strncmp(e[i].key, e[i - 1].key, 20) != 0)
+		if (new_curve)
 			res->label[res->ncurves] = curve_label(c, e, n, i);
 		res->point[i].curve = res->ncurves;
 		res->point[i].p_star = e[i].p_star;

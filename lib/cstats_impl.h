@@ -35,6 +35,7 @@ struct est {
 	size_t n_seeds, n_disc;
 	const char *eps_c_all, *eps_c_used, *eps_f_list, *eps_t_list;
 	const char *key;
+	size_t curve_row;	/* output: first input row of the curve, its id */
 };
 
 struct ctx {

@@ -128,14 +128,6 @@ rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len)
 }
 
 int
-rc_in_at_end(rc_in *in)
-{
-	const unsigned char *p;
-
-	return rc_in_peek(in, 1, &p) == 0;
-}
-
-int
 rc_in_check(const rc_in *in, rc_err *err)
 {
 	if (in->error)

@@ -31,15 +31,24 @@ metric(const char *u)
 	return u[0] != '\0' && rc_unit_is_length(u);
 }
 
+/* "prefixKEY = VAL\n"; the prefix is printed, not pasted into a buffer,
+ * so a key of any length is written whole. */
 static int
-put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
+put_prefixed(FILE *fp, size_t *len, const char *prefix, const char *key,
+    const char *val, rc_err *err)
 {
-	int n = fprintf(fp, "%s = %s\n", key, val);
+	int n = fprintf(fp, "%s%s = %s\n", prefix, key, val);
 
 	if (n < 0)
 		return rc_seterr(err, "write error");
 	*len += (size_t)n;
 	return 0;
+}
+
+static int
+put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
+{
+	return put_prefixed(fp, len, "", key, val, err);
 }
 
 int
@@ -93,13 +102,10 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	    put(fp, &len, "surf.z_unit", g->z_unit, err) != 0) ||
 	    put(fp, &len, "surf.periodic", g->periodic ? "1" : "0", err) != 0)
 		return -1;
-	for (size_t i = 0; i < g->nmeta; i++) {
-		char key[300];
-
-		snprintf(key, sizeof(key), "surf.meta.%s", g->meta[i].key);
-		if (put(fp, &len, key, g->meta[i].val, err) != 0)
+	for (size_t i = 0; i < g->nmeta; i++)
+		if (put_prefixed(fp, &len, "surf.meta.", g->meta[i].key,
+		    g->meta[i].val, err) != 0)
 			return -1;
-	}
 	for (size_t i = 0; i < g->nhistory; i++)
 		if (put(fp, &len, "surf.history", g->history[i], err) != 0)
 			return -1;

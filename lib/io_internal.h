@@ -45,8 +45,6 @@ size_t rc_in_read(rc_in *in, void *dst, size_t n);
  * 2 for a last line without one, 0 at end of input, -1 if the line does
  * not fit in cap - 1 bytes. */
 int rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len);
-/* 1 when no byte is left. */
-int rc_in_at_end(rc_in *in);
 /* A read error becomes an rc_err message; returns -1 if there was one. */
 int rc_in_check(const rc_in *in, rc_err *err);
 

@@ -132,6 +132,23 @@ test_roundtrip(void)
 		test_true(same_header(r, tame), "gsf keeps lengths, unit, kind, meta, history");
 	}
 	rc_grid_free(r);
+	/* A metadata key far longer than any fixed buffer (400 characters)
+	 * comes back whole, not cut short. */
+	{
+		char longkey[401];
+
+		memset(longkey, 'k', 400);
+		longkey[400] = '\0';
+		test_true(rc_grid_meta_set(tame, longkey, "v", &err) == 0 &&
+		    rc_grid_write(tame, tmp("k.gsf"), RC_FMT_GSF, &err) == 0,
+		    "write gsf with a 400-character key");
+		r = rc_grid_read(tmp("k.gsf"), NULL, &err);
+		test_true(r && rc_grid_meta_get(r, longkey) != NULL &&
+		    strcmp(rc_grid_meta_get(r, longkey), "v") == 0,
+		    "gsf keeps a 400-character metadata key whole");
+		rc_grid_free(r);
+		rc_grid_meta_unset(tame, longkey);
+	}
 	/* Beyond float32: an error, not Inf. */
 	test_true(rc_grid_write(g, tmp("b.gsf"), RC_FMT_GSF, &err) != 0 &&
 	    strstr(err.msg, "float32 range") != NULL, "gsf refuses -1.8e308: %s", err.msg);

@@ -30,10 +30,6 @@
 static volatile sig_atomic_t stop_signal;
 static volatile sig_atomic_t stop_flag;
 
-/* Set by SIGALRM every --checkpoint-every minutes: the solve stops, the
- * checkpoint is written and the same pressure goes on. */
-static volatile sig_atomic_t checkpoint_due;
-
 /* The first SIGINT/SIGTERM stops the solve (rows kept, checkpoint
  * written); a second one ends the process at once, removing temporaries. */
 static void
@@ -45,11 +41,13 @@ on_signal(int sig)
 	stop_flag = 1;
 }
 
+/* SIGALRM every --checkpoint-every minutes: the solve stops, the
+ * checkpoint is written and the same pressure goes on (stop_signal stays
+ * 0, which is how the loop tells a timer stop from a signal). */
 static void
 on_alarm(int sig)
 {
 	(void)sig;
-	checkpoint_due = 1;
 	stop_flag = 1;
 }
 
@@ -533,7 +531,6 @@ main(int argc, char **argv)
 				    input == NULL || rc_is_stdio(input) ?
 				    " (with the same indenter on standard input)" : "");
 			}
-			checkpoint_due = 0;
 			stop_flag = 0;
 			if (stop_signal)
 				stop_flag = 1;

@@ -57,12 +57,6 @@ rc_mpi_max(double *v, int count)
 	MPI_Allreduce(MPI_IN_PLACE, v, count, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
 }
 
-void
-rc_mpi_min(double *v, int count)
-{
-	MPI_Allreduce(MPI_IN_PLACE, v, count, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
-}
-
 /* The .surf values are float64 little-endian; MPI-IO moves raw bytes. */
 static int
 little_endian(void)

@@ -17,10 +17,9 @@ void rc_mpi_rows(size_t nx, size_t ny, size_t *rows, size_t *j0,
     size_t *alloc_complex);
 int rc_mpi_rank(void);
 int rc_mpi_size(void);
-/* In-place global sums, maxima, minima of count doubles. */
+/* In-place global sums and maxima of count doubles. */
 void rc_mpi_sum(double *v, int count);
 void rc_mpi_max(double *v, int count);
-void rc_mpi_min(double *v, int count);
 
 /* Read the .surf file at path: rank 0 parses the header, every rank reads
  * its rows (rc_mpi_rows) with one collective MPI-IO call.  Returns the

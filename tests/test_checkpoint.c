@@ -1,0 +1,327 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_checkpoint.c - lib/checkpoint.c: a write/read round trip is exact
+ * to the bit (displacement, pressures, options, finished rows), another
+ * indenter or other options are refused by rc_checkpoint_match, and a
+ * truncated file or one whose fields are out of range is refused by
+ * rc_checkpoint_read (never read as a checkpoint). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "checkpoint.h"
+#include "grid.h"
+#include "io.h"
+#include "testlib.h"
+
+#define NX 8
+#define NY 6
+
+static char path_buf[4][512];
+
+static const char *
+tmp(int slot, const char *name)
+{
+	snprintf(path_buf[slot], sizeof(path_buf[slot]), "%s/%s", test_tmpdir(),
+	    name);
+	return path_buf[slot];
+}
+
+static rc_grid *
+indenter(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(NX, NY, 2.5, 1.75, &err);
+
+	for (size_t k = 0; k < NX * NY; k++)
+		g->z[k] = sin(0.7 * (double)k) / 3;
+	rc_grid_meta_set(g, "H", "0.8", &err);
+	return g;
+}
+
+/* A checkpoint in the middle of pressure 3 of 3, two rows done. */
+static void
+fill(rc_checkpoint *c, const rc_grid *g)
+{
+	static const double p[3] = { 0.1, 1.0 / 3, 0.05 };
+	rc_err err;
+	rc_row r;
+
+	test_int(rc_checkpoint_init(c, g, p, 3, &err), 0, "init");
+	strcpy(c->method, "fire");
+	c->tol = 1e-9 / 3;
+	c->modulus = 2.0 / 3;
+	c->alpha = 0.3;
+	c->max_iter = 12345;
+	c->fd = 1;
+	c->reduced = 1;
+	c->next = 2;
+	c->solving = 1;
+	c->iterations = 777;
+	rc_row_init(&r);
+	for (int k = 0; k < 2; k++) {
+		rc_row_clear(&r);
+		rc_row_num(&r, "p_star", p[k]);
+		/* Tab, backslash and space are escaped in row.K: they come back.
+		 * (Not as the last column: an empty last value ends the line of
+		 * the .surf header in a tab, which its reader trims.) */
+		rc_row_str(&r, "label", k ? "a\tb\\c d" : "");
+		rc_row_num(&r, "a_r", 1.0 / 7 + k);
+		test_int(rc_checkpoint_add_row(c, &r, &err), 0, "add row %d", k);
+	}
+	rc_row_free(&r);
+}
+
+static void
+round_trip(void)
+{
+	rc_grid *g = indenter(), *u = NULL;
+	rc_checkpoint c, back;
+	rc_row r0, r1;
+	rc_err err;
+	double *z = malloc(NX * NY * sizeof(double));
+
+	fill(&c, g);
+	/* Values whose every bit matters: thirds, a subnormal, -0, huge. */
+	for (size_t k = 0; k < NX * NY; k++)
+		z[k] = (double)k / 3 - 5;
+	z[1] = 4.9e-324;
+	z[2] = -0.0;
+	z[3] = 1.7976931348623157e308;
+	test_int(rc_checkpoint_write(&c, z, tmp(0, "a.ck"), &err), 0,
+	    "write: %s", err.msg);
+	test_int(rc_checkpoint_read(&back, &u, tmp(0, "a.ck"), &err), 0,
+	    "read back: %s", err.msg);
+	if (u == NULL) {
+		rc_checkpoint_free(&c);
+		rc_grid_free(g);
+		free(z);
+		return;
+	}
+	test_true(u->nx == NX && u->ny == NY &&
+	    memcmp(u->z, z, sizeof(double) * NX * NY) == 0,
+	    "displacement back bit for bit");
+	test_int(rc_checkpoint_match(&back, &c, &err), 0,
+	    "read-back matches what was written: %s", err.msg);
+	test_true(back.input_sum == rc_checkpoint_hash(g), "input_sum back");
+	test_true(memcmp(back.pressures, c.pressures, 3 * sizeof(double)) == 0 &&
+	    back.npressures == 3, "pressures back bit for bit");
+	test_true(memcmp(&back.tol, &c.tol, sizeof(double)) == 0 &&
+	    memcmp(&back.modulus, &c.modulus, sizeof(double)) == 0 &&
+	    memcmp(&back.alpha, &c.alpha, sizeof(double)) == 0,
+	    "tol, E, alpha back bit for bit");
+	test_true(back.next == 2 && back.solving == 1 && back.iterations == 777 &&
+	    back.max_iter == 12345 && back.fd == 1 && back.reduced == 1 &&
+	    strcmp(back.method, "fire") == 0, "progress and options back");
+	test_int((long long)back.nrows, 2, "two finished rows back");
+	rc_row_init(&r0);
+	rc_row_init(&r1);
+	for (size_t k = 0; k < 2 && back.nrows == 2; k++) {
+		test_int(rc_checkpoint_row(&c, k, &r0, &err), 0, "row %zu written", k);
+		test_int(rc_checkpoint_row(&back, k, &r1, &err), 0, "row %zu read: %s", k, err.msg);
+		test_true(r0.n == 3 && r1.n == r0.n, "row %zu: 3 cells", k);
+		for (size_t i = 0; i < r0.n && i < r1.n; i++)
+			test_true(strcmp(r0.name[i], r1.name[i]) == 0 &&
+			    strcmp(r0.val[i], r1.val[i]) == 0 &&
+			    r0.is_str[i] == r1.is_str[i],
+			    "row %zu cell %zu: '%s' back as '%s'", k, i, r0.val[i],
+			    r1.val[i]);
+	}
+	/* The string with tab, backslash and space, unescaped. */
+	if (r1.n == 3)
+		test_true(strcmp(r1.val[1], "a\tb\\c d") == 0,
+		    "escaped string back: '%s'", r1.val[1]);
+	/* The number's text reads back to the same double. */
+	if (r1.n == 3)
+		test_true(strtod(r1.val[2], NULL) == 1.0 / 7 + 1,
+		    "a_r of row 1 back exactly: %s", r1.val[2]);
+	test_int(rc_checkpoint_row(&back, 2, &r1, &err), -1,
+	    "row 2 (not finished) refused");
+	rc_row_free(&r0);
+	rc_row_free(&r1);
+	rc_grid_free(u);
+	rc_checkpoint_free(&back);
+	rc_checkpoint_free(&c);
+	rc_grid_free(g);
+	free(z);
+}
+
+/* A changed indenter or option: match refuses, naming it. */
+static void
+identity(void)
+{
+	rc_grid *g = indenter();
+	rc_checkpoint c, d;
+	rc_err err;
+	uint64_t h0 = rc_checkpoint_hash(g);
+
+	fill(&c, g);
+	g->z[17] = nextafter(g->z[17], 1);
+	test_true(rc_checkpoint_hash(g) != h0, "hash sees one ulp of one height");
+	fill(&d, g);
+	test_int(rc_checkpoint_match(&c, &d, &err), -1, "one ulp: refused");
+	test_true(strstr(err.msg, "another indenter") != NULL, "message: %s",
+	    err.msg);
+	rc_checkpoint_free(&d);
+	g->z[17] = nextafter(g->z[17], -1);
+	test_true(rc_checkpoint_hash(g) == h0, "same heights, same hash");
+
+	rc_grid_meta_set(g, "H", "0.7", &err);
+	test_true(rc_checkpoint_hash(g) != h0, "hash sees the metadata");
+	rc_grid_meta_set(g, "H", "0.8", &err);
+	strcpy(g->unit, "um");
+	test_true(rc_checkpoint_hash(g) != h0, "hash sees the unit");
+	g->unit[0] = '\0';
+	g->periodic = !g->periodic;
+	test_true(rc_checkpoint_hash(g) != h0, "hash sees the periodic flag");
+	g->periodic = !g->periodic;
+	test_true(rc_checkpoint_hash(g) == h0, "restored: same hash");
+
+	fill(&d, g);
+	d.tol = nextafter(d.tol, 1);
+	test_int(rc_checkpoint_match(&c, &d, &err), -1, "tol one ulp off: refused");
+	test_true(strstr(err.msg, "--tol") != NULL, "message: %s", err.msg);
+	d.tol = c.tol;
+	d.pressures[2] = nextafter(d.pressures[2], 1);
+	test_int(rc_checkpoint_match(&c, &d, &err), -1,
+	    "pressure one ulp off: refused");
+	test_true(strstr(err.msg, "pressure 3") != NULL, "message: %s", err.msg);
+	d.pressures[2] = c.pressures[2];
+	strcpy(d.method, "cg");
+	test_int(rc_checkpoint_match(&c, &d, &err), -1, "other method: refused");
+	strcpy(d.method, c.method);
+	d.reduced = 0;
+	test_int(rc_checkpoint_match(&c, &d, &err), -1,
+	    "absolute vs reduced: refused");
+	d.reduced = 1;
+	d.nx = NX + 1;
+	test_int(rc_checkpoint_match(&c, &d, &err), -1, "other grid: refused");
+	d.nx = NX;
+	test_int(rc_checkpoint_match(&c, &d, &err), 0, "all restored: accepted");
+	rc_checkpoint_free(&d);
+	rc_checkpoint_free(&c);
+	rc_grid_free(g);
+}
+
+/* Rewrite the good checkpoint with one metadata key changed (val NULL:
+ * removed); reading it must fail with a message naming want. */
+static void
+refused(const char *key, const char *val, const char *want)
+{
+	rc_grid *g;
+	rc_checkpoint c;
+	rc_grid *u = (rc_grid *)1;
+	rc_err err;
+
+	g = rc_grid_read(tmp(0, "a.ck"), NULL, &err);
+	if (g == NULL) {
+		test_true(0, "re-read a.ck: %s", err.msg);
+		return;
+	}
+	if (val == NULL)
+		rc_grid_meta_unset(g, key);
+	else
+		rc_grid_meta_set(g, key, val, &err);
+	rc_grid_write(g, tmp(1, "b.ck"), RC_FMT_SURF, &err);
+	rc_grid_free(g);
+	test_int(rc_checkpoint_read(&c, &u, tmp(1, "b.ck"), &err), -1,
+	    "%s = %s: refused", key, val ? val : "(none)");
+	test_true(u == NULL, "%s = %s: no displacement handed out", key,
+	    val ? val : "(none)");
+	test_true(strstr(err.msg, want) != NULL, "%s = %s: message '%s' names %s",
+	    key, val ? val : "(none)", err.msg, want);
+}
+
+static void
+bad_files(void)
+{
+	rc_grid *g = indenter(), *u;
+	rc_checkpoint c;
+	rc_err err;
+	double z[NX * NY] = { 0 };
+	FILE *fp;
+	char *bytes;
+	long size;
+
+	fill(&c, g);
+	test_int(rc_checkpoint_write(&c, z, tmp(0, "a.ck"), &err), 0, "write");
+	rc_checkpoint_free(&c);
+	rc_grid_free(g);
+
+	/* Range checks: each field just outside what gfmd-solve accepts. */
+	refused("checkpoint.version", "1", "version");
+	refused("checkpoint.input_sum", "0123", "16 hex digits");
+	refused("checkpoint.method", "newton", "method");
+	refused("checkpoint.tol", "0", "checkpoint.tol");
+	refused("checkpoint.tol", "1.5", "checkpoint.tol");
+	refused("checkpoint.E", "-1", "checkpoint.E");
+	refused("checkpoint.E", "inf", "checkpoint.E");
+	refused("checkpoint.alpha", "1.0000001", "checkpoint.alpha");
+	refused("checkpoint.fd", "2", "checkpoint.fd");
+	refused("checkpoint.max_iter", "0", "checkpoint.max_iter");
+	refused("checkpoint.pressure_kind", "relative", "pressure_kind");
+	refused("checkpoint.pressures", "0.1,-1,0.05", "pressures");
+	refused("checkpoint.pressures", "0.1,,0.05", "pressures");
+	refused("checkpoint.next", "4", "checkpoint.next");
+	refused("checkpoint.next", "-1", "checkpoint.next");
+	/* solving needs pressures[next], 3 of 3 has none */
+	refused("checkpoint.next", "3", "inconsistent");
+	refused("checkpoint.state", "between", "iterations");
+	refused("checkpoint.state", "done", "state");
+	refused("checkpoint.iterations", "-5", "iterations");
+	refused("checkpoint.types", "nn", "types");
+	refused("checkpoint.row.1", NULL, "row.1");
+	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
+
+	/* The grid itself: a height field, a missing (NaN) value. */
+	for (int t = 0; t < 2; t++) {
+		rc_grid *g2 = rc_grid_read(tmp(0, "a.ck"), NULL, &err);
+
+		if (g2 == NULL)
+			break;
+		if (t == 0)
+			g2->kind = RC_KIND_HEIGHT;
+		else
+			g2->z[5] = NAN;
+		rc_grid_write(g2, tmp(1, "g.ck"), RC_FMT_SURF, &err);
+		rc_grid_free(g2);
+		u = (rc_grid *)1;
+		test_int(rc_checkpoint_read(&c, &u, tmp(1, "g.ck"), &err), -1,
+		    "%s: refused (%s)", t ? "a NaN displacement" : "kind height",
+		    err.msg);
+		test_true(u == NULL && strstr(err.msg, t ? "not finite" :
+		    "displacement") != NULL, "%s: no grid, message says why",
+		    t ? "NaN" : "height");
+	}
+
+	/* A truncated file (cut inside the values, and inside the header). */
+	fp = fopen(tmp(0, "a.ck"), "rb");
+	fseek(fp, 0, SEEK_END);
+	size = ftell(fp);
+	rewind(fp);
+	bytes = malloc((size_t)size);
+	test_true(fread(bytes, 1, (size_t)size, fp) == (size_t)size, "read bytes");
+	fclose(fp);
+	for (int cut = 0; cut < 2; cut++) {
+		long keep = cut ? size / 3 : size - 8;
+
+		fp = fopen(tmp(1, "t.ck"), "wb");
+		fwrite(bytes, 1, (size_t)keep, fp);
+		fclose(fp);
+		u = (rc_grid *)1;
+		test_int(rc_checkpoint_read(&c, &u, tmp(1, "t.ck"), &err), -1,
+		    "truncated to %ld of %ld bytes: refused (%s)", keep, size,
+		    err.msg);
+		test_true(u == NULL, "truncated: no displacement handed out");
+	}
+	free(bytes);
+}
+
+int
+main(void)
+{
+	round_trip();
+	identity();
+	bad_files();
+	return test_summary();
+}
