@@ -561,7 +561,7 @@ main(int argc, char **argv)
 			    .boundary = rc_boundary_name(o.so.boundary),
 			    .approach = rc_solver_approach(solver), .indenter = h,
 			    .hardness = rc_solver_opts_plastic(&o.so) ?
-			    o.so.hardness : INFINITY,
+			    o.so.hardness : 0,
 			    .a_plastic = rc_solver_plastic_fraction(solver),
 			    .nx = h->nx, .ny = h->ny };
 

@@ -216,7 +216,7 @@ main(int argc, char **argv)
 			    .seconds = seconds, .plan_seconds = plan_seconds,
 			    .method = "fire", .boundary = "periodic",
 			    .approach = rc_solver_approach(solver),
-			    .hardness = INFINITY, .a_plastic = 0,
+			    .hardness = 0, .a_plastic = 0,
 			    .indenter = h, .nx = h->nx, .ny = ny };
 
 			const char *why = gfmd_kappa_c_why(&in);
