@@ -16,6 +16,10 @@
  * agree at that tolerance: tests/test_solver.c); cpu_iter_in_pairs, the
  * same ratio in process CPU time (the solve's over the pair's), which
  * other processes on the machine disturb far less than the wall time.
+ * A third method row, cg-plastic, is CG with the pressure capped at the
+ * hardness H = 4 p (gfmd-solve --hardness; lib/pkcg_plastic.c): the cost
+ * of plasticity against the elastic cg row of the same map (its a_r
+ * error is against the elastic reference, so it shows the effect).
  *
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
@@ -135,7 +139,7 @@ surface(size_t n)
  * message), its result and the process CPU seconds of the solve. */
 static rc_solver *
 solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
-    double tol, rc_solve_result *r, double *cpu)
+    double tol, double hardness, rc_solve_result *r, double *cpu)
 {
 	rc_solver_opts o;
 	rc_solver *s;
@@ -145,6 +149,7 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 	rc_solver_defaults(&o);
 	o.method = method;
 	o.boundary = boundary;
+	o.hardness = hardness;
 	if (tol > 0)
 		o.tol = tol;
 	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
@@ -174,21 +179,23 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	int m;
 
 	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
-	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, &r, &cpu)) == NULL)
+	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, &r, &cpu)) == NULL)
 		return -1;
 	ref = contact_fraction(s, nn);
 	rc_solver_free(s);
-	for (m = 0; m < 2; m++) {
+	for (m = 0; m < 3; m++) {
 		enum rc_method method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
 		double ar, iters;
 
-		if ((s = solve(g, method, b, 0, &r, &cpu)) == NULL)
+		if ((s = solve(g, method, b, 0, m == 2 ? 4 * 0.05 : 0, &r,
+		    &cpu)) == NULL)
 			return -1;
 		ar = contact_fraction(s, nn);
 		iters = (double)(r.iterations ? r.iterations : 1);
 		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.2f\t"
 		    "%.1f\t%.1f\t%.6f\t%.1e\n",
-		    n, rc_boundary_name(b), rc_method_name(method), r.iterations,
+		    n, rc_boundary_name(b), m == 2 ? "cg-plastic" :
+		    rc_method_name(method), r.iterations,
 		    r.fft_pairs, r.fft_pairs / iters, r.seconds, pair,
 		    r.seconds / iters / pair, cpu / iters / pair_cpu,
 		    (double)rc_solver_bytes(s) / (double)nn,
@@ -266,7 +273,7 @@ contention(void)
 				if (pid < 0)
 					return 1;
 				rc_fft_set_threads(j == 0 ? 0 : 1);
-				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, &r, &cpu);
+				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, &r, &cpu);
 				if (pid > 0)
 					competitor_stop(pid);
 				if (s == NULL)

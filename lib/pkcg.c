@@ -63,8 +63,8 @@ rc__cg_alloc(rc_solver *s, rc_err *err)
 }
 
 /* out = G x: the periodic compliance (mean zero) or the free one. */
-static void
-compliance(rc_solver *s, const double *x, double *out)
+void
+rc__compliance(rc_solver *s, const double *x, double *out)
 {
 	if (s->free_bc)
 		rc_halfspace_apply(&s->fel, x, out);
@@ -165,8 +165,8 @@ final_check(rc_solver *s, double p)
 
 /* Self-compliance of one point, G_00 = (1/N) sum_{q != 0} 1/k_q: the lift
  * of a point (against the mean) under a unit pressure on it alone. */
-static double
-self_compliance(const rc_elastic *e)
+double
+rc__self_compliance(const rc_elastic *e)
 {
 	size_t i, j;
 	double sum = 0;
@@ -183,8 +183,8 @@ self_compliance(const rc_elastic *e)
 
 /* Initial pressure: the previous solution rescaled, the pressure a loaded
  * displacement implies, or uniform. */
-static void
-initial_pressure(rc_solver *s, double p)
+void
+rc__cg_initial_pressure(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
 	double *sigma = s->sigma;
@@ -223,7 +223,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	int stale = 1, conjugate = 0, status = 1;
 
 	(void)err;
-	initial_pressure(s, p);
+	rc__cg_initial_pressure(s, p);
 	memset(t, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double gsum = 0, pen = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
@@ -231,7 +231,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		size_t reentered = 0, clipped = 0, n_active = 0;
 
 		if (stale || since_refresh >= REFRESH_EVERY) {
-			compliance(s, sigma, disp);
+			rc__compliance(s, sigma, disp);
 			stale = 0;
 			since_refresh = 0;
 		}
@@ -288,7 +288,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			} else
 				t[k] = 0;
 		}
-		compliance(s, t, r);
+		rc__compliance(s, t, r);
 #pragma omp parallel for reduction(+:sum_rt, sum_r) schedule(static)
 		for (k = 0; k < n; k++)
 			if (sigma[k] > 0 || disp[k] + c - h[k] < 0) {
@@ -310,7 +310,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			tau_in = tau;
 		else {
 			if (!(g00 > 0))
-				g00 = s->free_bc ? s->fel.self : self_compliance(e);
+				g00 = s->free_bc ? s->fel.self : rc__self_compliance(e);
 			tau_in = 1 / g00;
 		}
 #pragma omp parallel for reduction(+:sum_s, reentered, clipped) schedule(static)

@@ -118,6 +118,15 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		return NULL;
 	}
 #endif
+	if (!(o->hardness >= 0)) {
+		rc_seterr(err, "hardness must be positive (0 or inf: no cap)");
+		return NULL;
+	}
+	if (rc_solver_opts_plastic(o) && o->method != RC_METHOD_CG) {
+		rc_seterr(err, "a hardness needs the CG method (--method cg): "
+		    "FIRE has no bounded-pressure variant");
+		return NULL;
+	}
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -225,6 +234,8 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		r = rc__fire_free_solve(s, p, res, err);
 	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
+	else if (rc_solver_opts_plastic(&s->opts))
+		r = rc__cg_plastic_solve(s, p, res, err);
 	else
 		r = rc__cg_solve(s, p, res, err);
 	if (r < 0)
@@ -338,6 +349,24 @@ rc_solver_approach(const rc_solver *s)
 #else
 	return s->top - sum / (double)s->n;
 #endif
+}
+
+int
+rc_solver_opts_plastic(const rc_solver_opts *o)
+{
+	return o->hardness > 0 && isfinite(o->hardness);
+}
+
+double
+rc_solver_plastic_fraction(const rc_solver *s)
+{
+	size_t k, at = 0;
+
+	if (!rc_solver_opts_plastic(&s->opts))
+		return 0;
+	for (k = 0; k < s->n; k++)
+		at += s->sigma[k] >= s->opts.hardness;
+	return (double)at / (double)s->n;
 }
 
 size_t

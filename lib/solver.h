@@ -36,6 +36,10 @@ typedef struct rc_solver_opts {
 	 * there (fire_free.c). */
 	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
+	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
+	 * 0 or +inf: no cap (the default).  CG only (pkcg_plastic.c,
+	 * gfmd-solve(1) PLASTICITY). */
+	double hardness;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
 	int measure;		/* FFT planning effort, an enum rc_fft_effort
@@ -113,6 +117,10 @@ const unsigned char *rc_solver_contact(const rc_solver *s);
 double rc_solver_elastic_energy(const rc_solver *s);
 /* Mean gap <u - h>. */
 double rc_solver_mean_gap(const rc_solver *s);
+/* Fraction of the points at the hardness, sigma >= H (0 without a cap). */
+double rc_solver_plastic_fraction(const rc_solver *s);
+/* Whether opts.hardness caps the pressure (finite and positive). */
+int rc_solver_opts_plastic(const rc_solver_opts *o);
 /* Bytes the solver holds (for the memory report). */
 size_t rc_solver_bytes(const rc_solver *s);
 

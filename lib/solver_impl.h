@@ -52,5 +52,13 @@ double rc__stiffness_max(const rc_solver *s);
 int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
+/* Shared by pkcg.c and pkcg_plastic.c: out = G x; G_00 of the periodic
+ * compliance; the CG start pressure of mean p (unbounded). */
+void rc__compliance(rc_solver *s, const double *x, double *out);
+double rc__self_compliance(const rc_elastic *e);
+void rc__cg_initial_pressure(rc_solver *s, double p);
+/* CG with the pressure bounded by opts.hardness (pkcg_plastic.c). */
+int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
+    rc_err *err);
 
 #endif

@@ -152,7 +152,8 @@ usage(void)
 {
 	printf(
 "usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...] | --approach D[,D...])\n"
-"           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
+"           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--hardness H]\n"
+"           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
 "           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
@@ -170,6 +171,8 @@ usage(void)
 "                       periodic flag)\n"
 "  -E MODULUS           contact modulus E* (default 1)\n"
 "  --method fire|cg     FIRE-GFMD (default) or Polonsky-Keer CG\n"
+"  --hardness H         perfect plasticity: cap the contact pressure at H\n"
+"                       (units of E*; needs --method cg; default no cap)\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
@@ -554,6 +557,9 @@ main(int argc, char **argv)
 			    .method = rc_method_name(o.so.method),
 			    .boundary = rc_boundary_name(o.so.boundary),
 			    .approach = rc_solver_approach(solver), .indenter = h,
+			    .hardness = rc_solver_opts_plastic(&o.so) ?
+			    o.so.hardness : 0,
+			    .a_plastic = rc_solver_plastic_fraction(solver),
 			    .nx = h->nx, .ny = h->ny };
 
 			const char *why = gfmd_kappa_c_why(&in);

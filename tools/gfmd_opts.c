@@ -78,6 +78,13 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		if ((o->boundary = rc_boundary_parse(arg)) < 0)
 			tool_bad(t, "--boundary %s: want periodic or free", arg);
 		break;
+	case OPT_HARDNESS:
+		if (tool_double(t, "--hardness", arg, &o->so.hardness) == 0 &&
+		    !(o->so.hardness > 0))
+			tool_bad(t, "--hardness %s: want a positive pressure (units "
+			    "of E*)", arg);
+		o->given_hardness = 1;
+		break;
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
 			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
@@ -158,6 +165,17 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	if (o->napproach && (o->ck_path != NULL || o->resume_path != NULL))
 		tool_bad(t, "--approach: --checkpoint and --resume are for load "
 		    "control (-p, --pressure-abs) only");
+	if (o->given_hardness && rc_solver_opts_plastic(&o->so)) {
+		if (o->so.method != RC_METHOD_CG)
+			tool_bad(t, "--hardness: perfect plasticity is solved by "
+			    "the CG method only; add --method cg");
+		if (o->napproach)
+			tool_bad(t, "--hardness: with -p or --pressure-abs only, "
+			    "not --approach");
+		if (o->ck_path != NULL || o->resume_path != NULL)
+			tool_bad(t, "--hardness: checkpoints do not record the "
+			    "hardness; run without --checkpoint and --resume");
+	}
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");
 	if (o->ck_path != NULL && rc_is_stdio(o->ck_path))

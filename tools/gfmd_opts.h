@@ -26,7 +26,8 @@ enum {
 	OPT_CHECKPOINT_EVERY,
 	OPT_RESUME,
 	OPT_BOUNDARY,
-	OPT_APPROACH
+	OPT_APPROACH,
+	OPT_HARDNESS
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -50,6 +51,7 @@ enum {
 	{ "resume", required_argument, NULL, OPT_RESUME }, \
 	{ "boundary", required_argument, NULL, OPT_BOUNDARY }, \
 	{ "approach", required_argument, NULL, OPT_APPROACH }, \
+	{ "hardness", required_argument, NULL, OPT_HARDNESS }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -74,6 +76,7 @@ struct gfmd_opts {
 	/* given on the command line (a resumed run takes the rest from its
 	 * checkpoint) */
 	int given_method, given_tol, given_e, given_alpha, given_fd;
+	int given_hardness;
 	int given_max_iter;
 };
 

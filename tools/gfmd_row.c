@@ -14,6 +14,8 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "p", in->p) ||
 	    rc_row_num(row, "approach", in->approach) ||
 	    rc_row_num(row, "a_r", st->a_r) ||
+	    rc_row_num(row, "hardness", in->hardness) ||
+	    rc_row_num(row, "a_plastic", in->a_plastic) ||
 	    rc_row_int(row, "n_c", (long long)st->n_c) ||
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||

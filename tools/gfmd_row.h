@@ -19,6 +19,8 @@ struct gfmd_row {
 	const char *method;
 	const char *boundary;		/* "periodic" or "free" */
 	double approach;		/* rc_solver_approach */
+	double hardness;		/* the cap on sigma; 0: none */
+	double a_plastic;		/* rc_solver_plastic_fraction */
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */
 };

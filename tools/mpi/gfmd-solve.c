@@ -111,6 +111,9 @@ main(int argc, char **argv)
 		tool_bad(&t, "--method %s: the MPI build has FIRE only (--method "
 		    "fire; use the serial gfmd-solve for cg)",
 		    rc_method_name(o.so.method));
+	if (o.given_hardness)
+		tool_bad(&t, "--hardness: not in the MPI build (perfect "
+		    "plasticity needs the serial gfmd-solve with --method cg)");
 	if (o.boundary == RC_BOUNDARY_FREE || o.napproach)
 		tool_bad(&t, "--boundary free, --approach: not in the MPI build "
 		    "(periodic boundaries under load control only; use the serial "
@@ -213,6 +216,7 @@ main(int argc, char **argv)
 			    .seconds = seconds, .plan_seconds = plan_seconds,
 			    .method = "fire", .boundary = "periodic",
 			    .approach = rc_solver_approach(solver),
+			    .hardness = 0, .a_plastic = 0,
 			    .indenter = h, .nx = h->nx, .ny = ny };
 
 			const char *why = gfmd_kappa_c_why(&in);
