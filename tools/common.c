@@ -84,6 +84,7 @@ tool_init(struct tool *t, const char *name, int argc, char **argv)
 	t->name = name;
 	t->lx = t->ly = 1.0;
 	t->fft_effort = -1;
+	t->pretty_on_terminal = 1;
 	for (int i = 0; i < argc; i++)
 		len += strlen(argv[i]) + 3;
 	if ((t->cmdline = malloc(len)) == NULL ||
@@ -811,7 +812,7 @@ tool_table_begin(const struct tool *t, rc_table_out *tab, FILE *fp)
 	rc_err err;
 
 	rc_table_begin(tab, fp, t->json);
-	if (t->json || !(t->pretty || isatty(fileno(fp))))
+	if (t->json || !(t->pretty || (t->pretty_on_terminal && isatty(fileno(fp)))))
 		return;
 	if (rc_table_pretty(tab, terminal_width(fileno(fp)), &err) != 0)
 		tool_fail(t, "%s", err.msg);

@@ -46,6 +46,10 @@ struct tool {
 	int threads;		/* -j N (at most the cores), 0 = all cores */
 	int json;		/* --json */
 	int pretty;		/* --pretty: aligned table even when not a terminal */
+	int pretty_on_terminal;	/* the aligned table when the output is a
+				 * terminal; 0 under mpirun, whose ranks write
+				 * to a pseudo-terminal whatever mpirun's own
+				 * output is */
 	double lx, ly;		/* -L, cell size for inputs that have none */
 	int have_l;
 	int nbad;		/* usage problems reported so far */

@@ -104,8 +104,14 @@ for spec in "64x48 -H 0.7 --seed 5 --lambda-s 0.1" "97x64 -H 0.8 --seed 7"; do
 		for r in 1 2 3; do
 			nc_s=$(col ser.tsv n_c $r)
 			nc_m=$(col mpi.tsv n_c $r)
+			# a missing column or a pretty table must fail this
+			# check, not abort the script in $((...))
+			case "$nc_m$nc_s" in
+			*[!0-9]* | "") d=1e300 ;;
+			*) d=$((nc_m - nc_s)) ;;
+			esac
 			check_range "gfmd-solve $size np=$np row $r n_c $nc_m vs $nc_s" \
-			    "$((nc_m - nc_s))" -1 1
+			    "$d" -1 1
 			check_rel "gfmd-solve $size np=$np row $r n_tot" \
 			    "$(col mpi.tsv n_tot $r)" "$(col ser.tsv n_tot $r)" 0
 			if [ "$nc_m" = "$nc_s" ]; then

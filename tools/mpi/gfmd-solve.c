@@ -96,6 +96,7 @@ main(int argc, char **argv)
 	mpitool_init(&argc, &argv);
 	rank = rc_mpi_rank();
 	tool_init(&t, "gfmd-solve", argc, argv);
+	t.pretty_on_terminal = 0;
 	gfmd_opts_init(&o);
 	opterr = 0;
 	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
