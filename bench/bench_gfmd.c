@@ -20,6 +20,10 @@
  * hardness H = 4 p (gfmd-solve --hardness; lib/pkcg_plastic.c): the cost
  * of plasticity against the elastic cg row of the same map (its a_r
  * error is against the elastic reference, so it shows the effect).
+ * Two more, fire-layer and cg-layer (periodic only), solve the same map
+ * on a bonded elastic layer of thickness L/8, nu = 0.3 (gfmd-solve
+ * --thickness; lib/layer.h): the cost of a finite thickness against the
+ * half space's rows (a_r error again against the half space).
  *
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
@@ -139,7 +143,8 @@ surface(size_t n)
  * message), its result and the process CPU seconds of the solve. */
 static rc_solver *
 solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
-    double tol, double hardness, rc_solve_result *r, double *cpu)
+    double tol, double hardness, double thickness, rc_solve_result *r,
+    double *cpu)
 {
 	rc_solver_opts o;
 	rc_solver *s;
@@ -150,6 +155,11 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 	o.method = method;
 	o.boundary = boundary;
 	o.hardness = hardness;
+	if (thickness > 0) {
+		o.thickness = thickness;
+		o.substrate = RC_SUBSTRATE_BONDED;
+		o.poisson = 0.3;
+	}
 	if (tol > 0)
 		o.tol = tol;
 	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
@@ -179,23 +189,25 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	int m;
 
 	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
-	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, &r, &cpu)) == NULL)
+	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, &r, &cpu)) == NULL)
 		return -1;
 	ref = contact_fraction(s, nn);
 	rc_solver_free(s);
-	for (m = 0; m < 3; m++) {
-		enum rc_method method = m == 0 ? RC_METHOD_FIRE : RC_METHOD_CG;
+	for (m = 0; m < (b == RC_BOUNDARY_PERIODIC ? 5 : 3); m++) {
+		static const char *const name[] = { "fire", "cg", "cg-plastic",
+			"fire-layer", "cg-layer" };
+		enum rc_method method = m == 0 || m == 3 ? RC_METHOD_FIRE :
+		    RC_METHOD_CG;
 		double ar, iters;
 
-		if ((s = solve(g, method, b, 0, m == 2 ? 4 * 0.05 : 0, &r,
-		    &cpu)) == NULL)
+		if ((s = solve(g, method, b, 0, m == 2 ? 4 * 0.05 : 0,
+		    m >= 3 ? 1.0 / 8 : 0, &r, &cpu)) == NULL)
 			return -1;
 		ar = contact_fraction(s, nn);
 		iters = (double)(r.iterations ? r.iterations : 1);
 		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.2f\t"
 		    "%.1f\t%.1f\t%.6f\t%.1e\n",
-		    n, rc_boundary_name(b), m == 2 ? "cg-plastic" :
-		    rc_method_name(method), r.iterations,
+		    n, rc_boundary_name(b), name[m], r.iterations,
 		    r.fft_pairs, r.fft_pairs / iters, r.seconds, pair,
 		    r.seconds / iters / pair, cpu / iters / pair_cpu,
 		    (double)rc_solver_bytes(s) / (double)nn,
@@ -273,7 +285,7 @@ contention(void)
 				if (pid < 0)
 					return 1;
 				rc_fft_set_threads(j == 0 ? 0 : 1);
-				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, &r, &cpu);
+				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0, &r, &cpu);
 				if (pid > 0)
 					competitor_stop(pid);
 				if (s == NULL)

@@ -119,6 +119,47 @@ rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
 	return 0;
 }
 
+int
+rc_elastic_set_layer(rc_elastic *e, double lx, double ly, double thickness,
+    enum rc_substrate substrate, double poisson, rc_err *err)
+{
+#ifdef RC_MPI
+	(void)e;
+	(void)lx;
+	(void)ly;
+	(void)thickness;
+	(void)substrate;
+	(void)poisson;
+	return rc_seterr(err, "a finite thickness is not in the MPI build");
+#else
+	size_t i, j;
+
+	if (rc_layer_check(thickness, substrate, poisson, err) < 0)
+		return -1;
+	if (e->n == 1)
+		return 0;	/* no mode but the uniform one: scales kept */
+	e->k_min = HUGE_VAL;
+	e->k_max = 0;
+	for (j = 0; j < e->ny; j++) {
+		double qy = rc_wavenumber(j, e->ny, ly);
+
+		for (i = 0; i < e->nxc; i++) {
+			double q = hypot(rc_wavenumber(i, e->nx, lx), qy);
+			double *k = &e->stiffness[j * e->nxc + i];
+
+			if (q > 0)
+				*k *= rc_layer_factor(q * thickness, substrate,
+				    poisson);
+			if (*k > e->k_max)
+				e->k_max = *k;
+			if (*k > 0 && *k < e->k_min)
+				e->k_min = *k;
+		}
+	}
+	return 0;
+#endif
+}
+
 void
 rc_elastic_free(rc_elastic *e)
 {

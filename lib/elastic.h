@@ -18,6 +18,7 @@
 #define RC_ELASTIC_H
 
 #include "fft.h"
+#include "layer.h"
 
 typedef struct rc_elastic {
 	size_t nx, ny, nxc, n;	/* n = nx * ny */
@@ -32,6 +33,12 @@ typedef struct rc_elastic {
 int rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx,
     double ly, double modulus, enum rc_fft_effort effort, rc_err *err);
 void rc_elastic_free(rc_elastic *e);
+/* An elastic layer of the given thickness on a rigid substrate instead of
+ * the half space: every k_q (q != 0) times rc_layer_factor(|q| d) (layer.h);
+ * k_0 stays 0 (the uniform mode is the solver's, see solver.c).  Serial
+ * build only. */
+int rc_elastic_set_layer(rc_elastic *e, double lx, double ly,
+    double thickness, enum rc_substrate substrate, double poisson, rc_err *err);
 
 /* Unnormalised r2c from in (nx*ny reals) to out (ny*nxc); in is kept. */
 void rc_elastic_r2c(rc_elastic *e, const double *in, fftw_complex *out);

@@ -127,6 +127,15 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		    "FIRE has no bounded-pressure variant");
 		return NULL;
 	}
+	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) < 0)
+		return NULL;
+	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) > 0 &&
+	    o->boundary == RC_BOUNDARY_FREE) {
+		rc_seterr(err, "a finite thickness needs periodic boundaries: "
+		    "the layer's response is known per Fourier mode (layer.h), "
+		    "not as the real-space Green's function free boundaries use");
+		return NULL;
+	}
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -156,6 +165,17 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;
+	}
+	s->k_uniform = HUGE_VAL;
+	if (rc_layer_check(o->thickness, o->substrate, o->poisson, NULL) > 0) {
+		if (rc_elastic_set_layer(&s->el, s->lx, s->ly, o->thickness,
+		    o->substrate, o->poisson, err) != 0) {
+			rc_elastic_free(&s->el);
+			free(s);
+			return NULL;
+		}
+		s->k_uniform = rc_layer_uniform_stiffness(o->modulus,
+		    o->thickness, o->poisson);
 	}
 	s->height = fftw_alloc_real(n);
 	s->sigma = fftw_alloc_real(n);
@@ -312,7 +332,9 @@ rc_solver_contact(const rc_solver *s)
 double
 rc_solver_elastic_energy(const rc_solver *s)
 {
-	return s->energy;
+	double p = s->last_pressure;
+
+	return s->energy + (isfinite(s->k_uniform) ? 0.5 * p * p / s->k_uniform : 0);
 }
 
 double
@@ -347,7 +369,8 @@ rc_solver_approach(const rc_solver *s)
 	rc_mpi_sum(&sum, 1);
 	return s->top - sum / (double)s->el.n;
 #else
-	return s->top - sum / (double)s->n;
+	return s->top - sum / (double)s->n +
+	    (isfinite(s->k_uniform) ? s->last_pressure / s->k_uniform : 0);
 #endif
 }
 

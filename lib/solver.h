@@ -19,6 +19,7 @@
 #define RC_SOLVER_H
 
 #include "grid.h"
+#include "layer.h"
 
 enum rc_method {
 	RC_METHOD_FIRE = 0,
@@ -40,6 +41,13 @@ typedef struct rc_solver_opts {
 	 * 0 or +inf: no cap (the default).  CG only (pkcg_plastic.c,
 	 * gfmd-solve(1) PLASTICITY). */
 	double hardness;
+	/* An elastic layer of this thickness (lateral length units) on a
+	 * rigid substrate instead of the half space: k_q of layer.h.  0 with
+	 * RC_SUBSTRATE_NONE: the half space (the default).  Periodic
+	 * boundaries only; poisson is the layer's ratio, in (-1, 0.5]. */
+	double thickness;
+	enum rc_substrate substrate;
+	double poisson;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
 	int measure;		/* FFT planning effort, an enum rc_fft_effort
@@ -100,7 +108,9 @@ int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
  *             from the area, elastic_free.h);
  *   periodic: delta = max h - <u>, the mean surface height being the only
  *             reference of a periodic body (so delta = mean-gap change:
- *             (max h - <h>) - <u - h>).
+ *             (max h - <h>) - <u - h>);
+ *   a layer:  delta = max h - <u> + p / k_0, the travel of the rigid
+ *             substrate (k_0 of layer.h: the uniform compression).
  * For a Hertz indenter h = -r^2/(2R) (free) this is the a^2/R of
  * Hertz. */
 double rc_solver_approach(const rc_solver *s);
@@ -112,7 +122,8 @@ const double *rc_solver_pressure(const rc_solver *s);		/* sigma(r) >= 0 */
  * method (documented in gfmd-solve(1)); both methods agree at convergence. */
 const unsigned char *rc_solver_contact(const rc_solver *s);
 /* Elastic energy per unit area, (1/2) sum_q (q E* / 2) |u_q|^2 / N^2
- * (periodic); free: (1/2) <sigma w> over the given area, the work of the
+ * (periodic; a layer: its k_q, plus p^2 / (2 k_0) of the uniform
+ * compression); free: (1/2) <sigma w> over the given area, the work of the
  * pressure per unit area of it. */
 double rc_solver_elastic_energy(const rc_solver *s);
 /* Mean gap <u - h>. */

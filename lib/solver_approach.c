@@ -12,7 +12,9 @@
  * in the solver is always that of the last (accepted) pressure.  Stop when
  * |approach - delta| <= tol delta, tol the solver's tolerance.
  *
- * Serial only (the MPI build refuses --approach).
+ * Serial only (the MPI build refuses --approach).  A periodic half space
+ * cannot be pressed past full contact at a finite load; a layer can (its
+ * uniform compression p / k_0 keeps growing).
  *
  * Start: the last solved pressure, or p = E* delta / sqrt(lx ly) (a flat
  * punch of a quarter the cell's width, F = 2 a E* delta, spread over the
@@ -64,7 +66,7 @@ rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
 	*pressure = NAN;
 	if (!(delta > 0) || !isfinite(delta))
 		return rc_seterr(err, "approach must be positive and finite");
-	if (!s->free_bc) {
+	if (!s->free_bc && !isfinite(s->k_uniform)) {
 		double sum = 0, full;
 
 		for (size_t i = 0; i < s->n; i++)

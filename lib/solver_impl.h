@@ -31,6 +31,7 @@ struct rc_solver {
 	int have_sigma;		/* CG: sigma holds a pressure to start from */
 	double last_pressure;	/* pressure of the last solve (0: none) */
 	double energy;		/* elastic energy per area of the solution */
+	double k_uniform;	/* a layer: k_0 (layer.h); +inf: half space */
 };
 
 /* Both methods' convergence measure (see solver.c) from the sum over all

@@ -153,6 +153,7 @@ usage(void)
 	printf(
 "usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...] | --approach D[,D...])\n"
 "           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--hardness H]\n"
+"           [--thickness D --poisson NU [--substrate bonded|slip]]\n"
 "           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
@@ -173,6 +174,12 @@ usage(void)
 "  --method fire|cg     FIRE-GFMD (default) or Polonsky-Keer CG\n"
 "  --hardness H         perfect plasticity: cap the contact pressure at H\n"
 "                       (units of E*; needs --method cg; default no cap)\n"
+"  --thickness D        an elastic layer of thickness D (length units) on a\n"
+"                       rigid substrate instead of the half space (periodic\n"
+"                       boundaries; default: a half space)\n"
+"  --poisson NU         the layer's Poisson ratio, in (-1, 0.5]\n"
+"  --substrate bonded|slip  the layer's interface with the substrate: bonded\n"
+"                       (default) or frictionless\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
@@ -560,6 +567,8 @@ main(int argc, char **argv)
 			    .hardness = rc_solver_opts_plastic(&o.so) ?
 			    o.so.hardness : 0,
 			    .a_plastic = rc_solver_plastic_fraction(solver),
+			    .thickness = o.so.thickness,
+			    .substrate = o.so.substrate, .poisson = o.so.poisson,
 			    .nx = h->nx, .ny = h->ny };
 
 			const char *why = gfmd_kappa_c_why(&in);

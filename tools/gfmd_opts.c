@@ -85,6 +85,29 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 			    "of E*)", arg);
 		o->given_hardness = 1;
 		break;
+	case OPT_THICKNESS:
+		if (tool_double(t, "--thickness", arg, &o->so.thickness) == 0 &&
+		    !(o->so.thickness > 0 && isfinite(o->so.thickness)))
+			tool_bad(t, "--thickness %s: want a positive length", arg);
+		o->given_layer = 1;
+		break;
+	case OPT_SUBSTRATE: {
+		int sub = rc_substrate_parse(arg);
+
+		if (sub < 0)
+			tool_bad(t, "--substrate %s: want bonded or slip", arg);
+		else
+			o->so.substrate = (enum rc_substrate)sub;
+		o->given_layer = 1;
+		break;
+	}
+	case OPT_POISSON:
+		if (tool_double(t, "--poisson", arg, &o->so.poisson) == 0 &&
+		    !(o->so.poisson > -1 && o->so.poisson <= 0.5))
+			tool_bad(t, "--poisson %s: want a ratio in (-1, 0.5]", arg);
+		o->poisson_given = 1;
+		o->given_layer = 1;
+		break;
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
 			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
@@ -175,6 +198,26 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 		if (o->ck_path != NULL || o->resume_path != NULL)
 			tool_bad(t, "--hardness: checkpoints do not record the "
 			    "hardness; run without --checkpoint and --resume");
+	}
+	if (o->given_layer) {
+		if (!(o->so.thickness > 0))
+			tool_bad(t, "--substrate, --poisson: describe a layer; "
+			    "give its --thickness D");
+		else {
+			if (o->so.substrate == RC_SUBSTRATE_NONE)
+				o->so.substrate = RC_SUBSTRATE_BONDED;
+			if (!o->poisson_given)
+				tool_bad(t, "--thickness: give the layer's --poisson "
+				    "NU (its uniform compression, and the bonded "
+				    "kernel, depend on it)");
+		}
+		if (o->boundary == RC_BOUNDARY_FREE)
+			tool_bad(t, "--thickness: a layer needs periodic "
+			    "boundaries (its response is known per Fourier "
+			    "mode only); drop --boundary free");
+		if (o->ck_path != NULL || o->resume_path != NULL)
+			tool_bad(t, "--thickness: checkpoints do not record the "
+			    "layer; run without --checkpoint and --resume");
 	}
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");

@@ -27,7 +27,10 @@ enum {
 	OPT_RESUME,
 	OPT_BOUNDARY,
 	OPT_APPROACH,
-	OPT_HARDNESS
+	OPT_HARDNESS,
+	OPT_THICKNESS,
+	OPT_SUBSTRATE,
+	OPT_POISSON
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -52,6 +55,9 @@ enum {
 	{ "boundary", required_argument, NULL, OPT_BOUNDARY }, \
 	{ "approach", required_argument, NULL, OPT_APPROACH }, \
 	{ "hardness", required_argument, NULL, OPT_HARDNESS }, \
+	{ "thickness", required_argument, NULL, OPT_THICKNESS }, \
+	{ "substrate", required_argument, NULL, OPT_SUBSTRATE }, \
+	{ "poisson", required_argument, NULL, OPT_POISSON }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -77,6 +83,8 @@ struct gfmd_opts {
 	 * checkpoint) */
 	int given_method, given_tol, given_e, given_alpha, given_fd;
 	int given_hardness;
+	int given_layer;		/* --thickness, --substrate or --poisson */
+	int poisson_given;
 	int given_max_iter;
 };
 

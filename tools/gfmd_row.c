@@ -16,6 +16,10 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "a_r", st->a_r) ||
 	    rc_row_num(row, "hardness", in->hardness) ||
 	    rc_row_num(row, "a_plastic", in->a_plastic) ||
+	    rc_row_num(row, "thickness", in->thickness) ||
+	    rc_row_str(row, "substrate", rc_substrate_name(in->substrate)) ||
+	    rc_row_num(row, "poisson", in->substrate == RC_SUBSTRATE_NONE ? 0 :
+	    in->poisson) ||
 	    rc_row_int(row, "n_c", (long long)st->n_c) ||
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||

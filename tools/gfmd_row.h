@@ -21,6 +21,9 @@ struct gfmd_row {
 	double approach;		/* rc_solver_approach */
 	double hardness;		/* the cap on sigma; 0: none */
 	double a_plastic;		/* rc_solver_plastic_fraction */
+	double thickness;		/* the layer's; 0: a half space */
+	enum rc_substrate substrate;	/* RC_SUBSTRATE_NONE: a half space */
+	double poisson;			/* the layer's; 0 for a half space */
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */
 };

@@ -174,7 +174,7 @@ done
 
 # What the MPI build does not have is refused with a message, exit 2; a
 # missing input fails on every rank alike, exit 1, without hanging.
-for bad in "--method cg" "--fd" "--png x.png" "--checkpoint c.surf" "--gap g.npy" "--boundary free"; do
+for bad in "--method cg" "--fd" "--png x.png" "--checkpoint c.surf" "--gap g.npy" "--boundary free" "--thickness 0.1 --poisson 0.3" "--method cg --hardness 1"; do
 	check_status "gfmd-solve MPI refuses $bad" 2 $MPIRUN -np 2 \
 	    "$MPI_BIN/gfmd-solve" -p 0.1 $bad t.surf
 done

@@ -112,6 +112,9 @@ main(int argc, char **argv)
 		tool_bad(&t, "--method %s: the MPI build has FIRE only (--method "
 		    "fire; use the serial gfmd-solve for cg)",
 		    rc_method_name(o.so.method));
+	if (o.given_layer)
+		tool_bad(&t, "--thickness: not in the MPI build (an elastic "
+		    "layer is solved by the serial gfmd-solve)");
 	if (o.given_hardness)
 		tool_bad(&t, "--hardness: not in the MPI build (perfect "
 		    "plasticity needs the serial gfmd-solve with --method cg)");

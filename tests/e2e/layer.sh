@@ -1,0 +1,96 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-3.0-or-later
+# layer.sh - gfmd-solve --thickness end to end: a sine in full contact on
+# a layer carries p + k_q A cos (lib/layer.h's k_q, computed here by awk
+# from the closed form) with both methods, the approach adds p/k_0, a
+# very thick layer is the half space, displacement control past full
+# contact, the rows, the refusals, and contact-stats grouping by layer.
+. "$RC_TOP/tests/e2e/lib.sh"
+T=$T_TMP
+
+# The amplitude of a pressure field: max - mean.
+amplitude() {
+	off=$(head -c 65536 "$1" | grep -a '^data_offset = ' | sed 's/^data_offset = //')
+	od -A n -t f8 -v -j "$off" "$1" | tr -s ' ' '\n' | sed '/^$/d' |
+	    awk 'NR == 1 || $1 > m { m = $1 } { s += $1 } END { printf "%.17g\n", m - s / NR }'
+}
+
+# k_q A of a sine of wavelength 1 and amplitude A on a layer of
+# thickness d, Poisson 0.3, E* = 1: phi from the closed form.
+kqa() {
+	awk -v d="$1" -v kind="$2" -v A="$3" 'function ch(x) { return (exp(x) + exp(-x)) / 2 }
+		function sh(x) { return (exp(x) - exp(-x)) / 2 }
+		BEGIN { q = 2 * 3.14159265358979324; t = q * d; nu = 0.3
+		if (kind == "slip") phi = (2 * t + sh(2 * t)) / (ch(2 * t) - 1)
+		else phi = ((3 - 4 * nu) * ch(2 * t) + 2 * t * t + 5 - 12 * nu + 8 * nu * nu) / ((3 - 4 * nu) * sh(2 * t) - 2 * t)
+		printf "%.17g\n", q / 2 * phi * A }'
+}
+
+surfgen -q -n 64x4 --type sine --wavelength 1 --amplitude 0.01 -o "$T/sine.surf"
+for m in fire cg; do
+	for sub in bonded slip; do
+		for th in 0.02 0.3; do
+			gfmd-solve -q -j 1 --method $m --tol 1e-10 --pressure-abs 20 \
+			    --thickness $th --substrate $sub --poisson 0.3 \
+			    --pressure "$T/sig.surf" "$T/sine.surf" > "$T/s.tsv"
+			check "$m $sub d=$th: converges" test $? -eq 0
+			check_rel "$m $sub d=$th: full contact" "$(col "$T/s.tsv" a_r)" 1 0
+			check_rel "$m $sub d=$th: sigma - p = k_q A cos" \
+			    "$(amplitude "$T/sig.surf")" "$(kqa $th $sub 0.01)" 1e-8
+			# k_0 = (1 - nu)^2 / ((1 - 2 nu) d) = 1.225 / d
+			check_rel "$m $sub d=$th: approach = A + p/k_0" \
+			    "$(col "$T/s.tsv" approach)" "$(awk -v d=$th 'BEGIN { printf "%.17g\n", 0.01 + 20 * d / 1.225 }')" 1e-10
+			check "$m $sub d=$th: the layer in the row" test \
+			    "$(col "$T/s.tsv" thickness) $(col "$T/s.tsv" substrate) $(col "$T/s.tsv" poisson)" = "$th $sub 0.3"
+		done
+	done
+done
+
+# --- A layer a hundred cells thick is the half space (phi = 1 to
+# round-off): the same contact points and mean gap.
+surfgen -q -n 64 --seed 3 -o "$T/r.surf"
+gfmd-solve -q -j 1 -p 0.05 "$T/r.surf" > "$T/half.tsv"
+gfmd-solve -q -j 1 -p 0.05 --thickness 100 --poisson 0.3 "$T/r.surf" > "$T/thick.tsv"
+check_rel "thick layer: the half space's n_c" "$(col "$T/thick.tsv" n_c)" "$(col "$T/half.tsv" n_c)" 0
+check_rel "thick layer: the half space's mean gap" "$(col "$T/thick.tsv" mean_gap)" "$(col "$T/half.tsv" mean_gap)" 1e-9
+check "half space: thickness 0, substrate none" test "$(col "$T/half.tsv" thickness) $(col "$T/half.tsv" substrate)" = "0 none"
+
+# --- Displacement control past full contact (a half space refuses it):
+# the sine at approach A + 20 d / k_0 comes back at p = 20.
+gfmd-solve -q -j 1 --tol 1e-10 --approach "$(awk 'BEGIN { printf "%.17g\n", 0.01 + 20 * 0.3 / 1.225 }')" \
+    --thickness 0.3 --poisson 0.3 "$T/sine.surf" > "$T/ap.tsv"
+check "approach past full contact on a layer: converges" test $? -eq 0
+check_rel "approach past full contact: p = 20" "$(col "$T/ap.tsv" p)" 20 1e-8
+check_status "approach past full contact on a half space: refused" 1 \
+    gfmd-solve -q --approach 1 "$T/sine.surf"
+
+# --- Refusals (exit 2, before any work).
+check_status "--thickness without --poisson" 2 gfmd-solve --thickness 0.1 -p 0.1 "$T/r.surf"
+check "--thickness without --poisson: says so" grep -q -- "--poisson" "$T/stderr"
+check_status "--poisson without --thickness" 2 gfmd-solve --poisson 0.3 -p 0.1 "$T/r.surf"
+check_status "--thickness 0" 2 gfmd-solve --thickness 0 --poisson 0.3 -p 0.1 "$T/r.surf"
+check_status "--poisson 0.6" 2 gfmd-solve --thickness 0.1 --poisson 0.6 -p 0.1 "$T/r.surf"
+check_status "--substrate glued" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --substrate glued -p 0.1 "$T/r.surf"
+check_status "--thickness with --boundary free" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --boundary free -p 0.1 "$T/r.surf"
+check_status "--thickness with --checkpoint" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
+surfgen -q -n 32 --seed 2 | surfwarp --detrend plane -o "$T/np.surf"
+check_status "--thickness on a non-periodic map without --boundary periodic" 1 \
+    gfmd-solve -q --thickness 0.1 --poisson 0.3 -p 0.1 "$T/np.surf"
+check "non-periodic map: the message names periodic boundaries" grep -q "periodic" "$T/stderr"
+
+# --- Plasticity on a layer: a cap that never binds (H = 4000 p) gives
+# the elastic layer's contact; one that binds (H = 4 p) flattens points.
+gfmd-solve -q -j 1 --method cg -p 0.05 --thickness 0.1 --poisson 0.3 "$T/r.surf" > "$T/le.tsv"
+gfmd-solve -q -j 1 --method cg -p 0.05 --thickness 0.1 --poisson 0.3 --hardness 200 "$T/r.surf" > "$T/lh.tsv"
+gfmd-solve -q -j 1 --method cg -p 0.05 --thickness 0.1 --poisson 0.3 --hardness 0.2 "$T/r.surf" > "$T/lp.tsv"
+check_rel "layer, H = 4000 p: the elastic layer's n_c" "$(col "$T/lh.tsv" n_c)" "$(col "$T/le.tsv" n_c)" 0
+check_rel "layer, H = 4000 p: the elastic layer's approach" "$(col "$T/lh.tsv" approach)" "$(col "$T/le.tsv" approach)" 1e-6
+check_range "layer, H = 4 p: plastic points" "$(col "$T/lp.tsv" a_plastic)" 1e-9 1
+
+# --- contact-stats: the layer is a key (two thicknesses, two groups).
+gfmd-solve -q -j 1 -p 0.05 --thickness 0.1 --poisson 0.3 "$T/r.surf" > "$T/l1.tsv"
+gfmd-solve -q -j 1 -p 0.05 --thickness 0.2 --poisson 0.3 "$T/r.surf" > "$T/l2.tsv"
+contact-stats -q --no-extrapolate -o "$T/cs.tsv" "$T/l1.tsv" "$T/l2.tsv" "$T/half.tsv"
+check "contact-stats over layer rows" test $? -eq 0
+check_rel "contact-stats: one group per layer and the half space" "$(awk 'END { print NR - 1 }' "$T/cs.tsv")" 3 0
+summary
