@@ -62,9 +62,11 @@ rc_threads_wait_passively(int threads, char **argv)
 #ifdef _OPENMP
 	if (threads <= 1 || getenv("OMP_WAIT_POLICY") != NULL)
 		return 0;
-	if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0)
+	if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0 ||
+	    setenv(RC_THREADS_REEXEC_ENV, "1", 1) != 0)
 		return -1;
 	execv("/proc/self/exe", argv);
+	unsetenv(RC_THREADS_REEXEC_ENV);
 	return -1;	/* no /proc: run on, as before */
 #else
 	(void)threads;

@@ -30,6 +30,11 @@
 #ifndef RC_THREADS_H
 #define RC_THREADS_H
 
+/* Set in the environment of the re-executed program, so that it can tell
+ * its second start from its first (the tools then keep quiet about what
+ * the first start already said: the -j clamp note). */
+#define RC_THREADS_REEXEC_ENV "RC_THREADS_REEXEC"
+
 int rc_threads_wait_passively(int threads, char **argv);
 int rc_threads_auto(void);
 

@@ -387,9 +387,13 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 			 * 64^2 solve take 38 s): clamped, with a note. */
 			if (t->threads > omp_get_num_procs()) {
 				t->threads = omp_get_num_procs();
-				tool_warn(t, "-j %s: more threads than the %d core%s "
-				    "available; using %d", arg, t->threads,
-				    t->threads == 1 ? "" : "s", t->threads);
+				/* said once: not again after the re-execution
+				 * for passive waiting (threads.h) */
+				if (getenv(RC_THREADS_REEXEC_ENV) == NULL)
+					tool_warn(t, "-j %s: more threads than the "
+					    "%d core%s available; using %d", arg,
+					    t->threads, t->threads == 1 ? "" : "s",
+					    t->threads);
 			}
 #endif
 		}
@@ -463,6 +467,7 @@ tool_fft_setup(struct tool *t)
 	rc_err err;
 
 	rc_threads_wait_passively(rc_fft_set_threads(t->threads), t->argv);
+	unsetenv(RC_THREADS_REEXEC_ENV);	/* not for the programs we run */
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;
 	if (t->wisdom != NULL && rc_fft_wisdom_import(t->wisdom, &err) < 0)

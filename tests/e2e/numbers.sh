@@ -151,6 +151,8 @@ check "... naming both fields" grep -q "header fields 2 and 4: duplicate column 
 cores=$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN)
 check_status "gfmd-solve -j 4096" 0 gfmd-solve -q -j 4096 -p 0.05 -o j4096.tsv s32.surf
 check "... says it uses the $cores cores" grep -q -- "-j 4096: more threads than the $cores core.* available; using $cores\$" "$T_TMP/stderr"
+check "... once (not again after the re-execution for passive waiting)" \
+    [ "$(grep -c -- "-j 4096: more threads" "$T_TMP/stderr")" = 1 ]
 gfmd-solve -q -j 1 -p 0.05 -o j1.tsv s32.surf
 check "... and finds the contact of -j 1" [ "$(col j4096.tsv n_c)" = "$(col j1.tsv n_c)" ]
 check_status "surfgen -j $cores: no note" 0 surfgen -j "$cores" -n 8 -o j.surf
