@@ -10,7 +10,9 @@
 #       pk4    Peklenik    seed3  random seed   hx2      harmonic exponent
 #       w2     warp (Eq. 4), rescaled to rms gradient 1  flip  h -> -h
 #   $(OUT)/sol/NAME__p0.05.tsv     gfmd-solve row of surface NAME at p* 0.05;
-#       further "__" words: mfire|mcg (method), tol1e-6 (tolerance)
+#       further "__" words: mfire|mcg (method), tol1e-6 (tolerance),
+#       hard0.5 (--hardness, implies mcg), th0.125 (an elastic layer of
+#       that --thickness), nu0.3 (its --poisson), slip (its --substrate)
 #   $(OUT)/stat/NAME.tsv           surfstat scalars of surface NAME
 # A study lists the files its figure needs and reduces them with
 # contact-stats, awk and gnuplot.  Tools are not prerequisites (other
@@ -69,7 +71,11 @@ surf_of = $(firstword $(subst __, ,$(1)))
 solve_words = $(wordlist 2,99,$(subst __, ,$(1)))
 solveopts = -p $(patsubst p%,%,$(filter p%,$(call solve_words,$(1)))) \
 	$(patsubst m%,--method %,$(filter m%,$(call solve_words,$(1)))) \
-	$(patsubst tol%,--tol %,$(filter tol%,$(call solve_words,$(1))))
+	$(patsubst tol%,--tol %,$(filter tol%,$(call solve_words,$(1)))) \
+	$(patsubst hard%,--method cg --hardness %,$(filter hard%,$(call solve_words,$(1)))) \
+	$(patsubst th%,--thickness %,$(filter th%,$(call solve_words,$(1)))) \
+	$(patsubst nu%,--poisson %,$(filter nu%,$(call solve_words,$(1)))) \
+	$(if $(filter slip,$(call solve_words,$(1))),--substrate slip)
 
 $(OUT)/sol/%.tsv: $(OUT)/surf/$$(call surf_of,$$*).surf
 	@mkdir -p $(@D)

@@ -89,4 +89,15 @@ check_status "nayak: second make has nothing to do" 0 make -q -C "$S/$N" BIN="$R
 n1=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.25)
 n2=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.125)
 check "nayak: Nayak(eps_f=1/8)=$n2 > Nayak(eps_f=1/4)=$n1" awk -v a="$n2" -v b="$n1" 'BEGIN { exit !(a > b && b > 0) }'
+# effects: on the same surface, perfect plasticity raises kappa (a_r >=
+# p/H adds flattened area) and a thin bonded layer lowers it (stiffer
+# than the half space at long wavelengths).
+E=effects
+make -s -j2 -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" LS=0.125 SEEDS=1 PRESSURES=0.1 EPS_C="0.5 0.25" HARD=0.5 THICK=0.125 >"$T_TMP/e.log" 2>&1
+check "effects: make runs" test -s "$T_TMP/$E/kappa.png" -a -s "$T_TMP/$E/paired.tsv"
+check_status "effects: second make has nothing to do" 0 make -q -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" LS=0.125 SEEDS=1 PRESSURES=0.1 EPS_C="0.5 0.25" HARD=0.5 THICK=0.125
+ke=$(pick "$T_TMP/$E/kappa.tsv" kappa curve elastic)
+kh=$(pick "$T_TMP/$E/kappa.tsv" kappa curve hard0.5)
+kt=$(pick "$T_TMP/$E/kappa.tsv" kappa curve th0.125)
+check "effects: kappa plastic $kh > elastic $ke > layer $kt" awk -v h="$kh" -v e="$ke" -v t="$kt" 'BEGIN { exit !(h > e && e > t && t > 0) }'
 summary
