@@ -17,7 +17,13 @@ WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L
 PKG_CONFIG ?= pkg-config
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
-PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(PKGS) 2>/dev/null)
+# libnetcdf is compiled against but loaded only when a netCDF file is read
+# or written (lib/io_nc.c says why): not linked; its soname from the
+# shared library pkg-config points to.
+PKGS_DLOPEN = netcdf
+PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(filter-out $(PKGS_DLOPEN),$(PKGS)) 2>/dev/null)
+NETCDF_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir netcdf 2>/dev/null)/libnetcdf.so" 2>/dev/null | awk '$$1 == "SONAME" { print $$2 }')
+DLOPEN_CFLAGS = $(if $(NETCDF_SONAME),-DRC_NETCDF_SONAME='"$(NETCDF_SONAME)"')
 
 # Before compiling anything: every library must be found, else name the
 # Debian packages to install (instead of a compiler error on fftw3.h).
@@ -53,7 +59,8 @@ $(info roughcontact: all build and test dependencies at once: make deps (as root
 $(error missing build dependencies)
 endif
 endif
-ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) -Ilib -Itools $(PKG_CFLAGS)
+ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) -Ilib -Itools $(PKG_CFLAGS) \
+	$(DLOPEN_CFLAGS)
 LDLIBS   = -lfftw3_omp $(PKG_LIBS) -lm
 ALL_LDFLAGS = -fopenmp $(SAN_FLAGS) $(LDFLAGS)
 
@@ -155,7 +162,7 @@ $(O)/roughcontact.pc:
 	  echo 'Name: roughcontact'; \
 	  echo 'Description: contact mechanics of rough surfaces (GFMD, statistics, formats)'; \
 	  echo 'Version: $(VERSION)'; \
-	  echo 'Requires: $(PKGS)'; \
+	  echo 'Requires: $(filter-out $(PKGS_DLOPEN),$(PKGS))'; \
 	  echo 'Cflags: -I$${includedir} -fopenmp'; \
 	  echo 'Libs: -L$${libdir} -lroughcontact -lfftw3_omp -fopenmp -lm'; } > $@
 
@@ -197,7 +204,7 @@ clean:
 FUZZ_SECONDS ?= 60
 FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
-	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS)
+	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
 FUZZ_READ_SRC = lib/io.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c

@@ -13,44 +13,109 @@
  * and reads; we read any netCDF the library opens (also netCDF-4).
  * Heights are written as stored: when the grid's height unit differs from
  * its lateral one, the lengths are converted to the height unit.
+ *
+ * libnetcdf is loaded when a netCDF file is read or written (dlopen), not
+ * when a program starts: with HDF5, curl and their TLS and Kerberos
+ * libraries it is 40 of the 54 shared libraries a tool would otherwise
+ * map and relocate at every start (measured on a loaded 2-core machine:
+ * a program that links them all starts in 50-80 ms, without them in
+ * 15-30 ms), which every run in a pipeline and every restart for passive
+ * waiting (threads.h) would pay.  RTLD_NODELETE keeps it mapped once
+ * loaded: HDF5 registers exit handlers.
  */
 #include "io_internal.h"
 
+#include <dlfcn.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <netcdf.h>
 #include <netcdf_mem.h>
 
+/* The shared library to load: its soname, found by the Makefile. */
+#ifndef RC_NETCDF_SONAME
+#define RC_NETCDF_SONAME "libnetcdf.so"
+#endif
+
+/* The functions of libnetcdf used here, typed from its header. */
+#define NC_FUNCS(X) \
+	X(strerror) X(inq_att) X(get_att_double) X(get_att_text) \
+	X(open_mem) X(inq_varid) X(inq_var) X(inq_vardimid) X(inq_dimlen) \
+	X(get_var_double) X(close) X(create_mem) X(def_dim) X(def_var) \
+	X(put_att_double) X(put_att_int) X(put_att_text) X(enddef) \
+	X(put_var_double) X(close_memio) X(abort)
+
+struct ncapi {
+	void *handle;
+#define NC_MEMBER(f) __typeof__(nc_##f) *f;
+	NC_FUNCS(NC_MEMBER)
+#undef NC_MEMBER
+};
+
 static int
-nc_fail(rc_err *err, const char *what, int status)
+ncapi_open(struct ncapi *api, rc_err *err)
 {
-	return rc_seterr(err, "netCDF: %s: %s", what, nc_strerror(status));
+	const char *missing = NULL;
+
+	api->handle = dlopen(RC_NETCDF_SONAME, RTLD_NOW | RTLD_LOCAL |
+	    RTLD_NODELETE);
+	if (api->handle == NULL)
+		return rc_seterr(err, "netCDF: cannot load %s (%s); install "
+		    "the Debian package libnetcdf19", RC_NETCDF_SONAME, dlerror());
+	/* the POSIX idiom: a function pointer written through void * */
+#define NC_RESOLVE(f) \
+	if ((*(void **)&api->f = dlsym(api->handle, "nc_" #f)) == NULL && \
+	    missing == NULL) \
+		missing = "nc_" #f;
+	NC_FUNCS(NC_RESOLVE)
+#undef NC_RESOLVE
+	if (missing != NULL) {
+		dlclose(api->handle);
+		api->handle = NULL;
+		return rc_seterr(err, "netCDF: %s has no %s", RC_NETCDF_SONAME,
+		    missing);
+	}
+	return 0;
+}
+
+static void
+ncapi_close(struct ncapi *api)
+{
+	if (api->handle != NULL)
+		dlclose(api->handle);
+}
+
+static int
+nc_fail(const struct ncapi *api, rc_err *err, const char *what, int status)
+{
+	return rc_seterr(err, "netCDF: %s: %s", what, api->strerror(status));
 }
 
 /* Attribute att of variable name as a number / text; 0 if present. */
 static int
-att_double(int nc, int var, const char *att, double *v)
+att_double(const struct ncapi *api, int nc, int var, const char *att,
+    double *v)
 {
 	size_t len;
 	nc_type t;
 
-	if (nc_inq_att(nc, var, att, &t, &len) != NC_NOERR || len != 1 ||
+	if (api->inq_att(nc, var, att, &t, &len) != NC_NOERR || len != 1 ||
 	    t == NC_CHAR || t == NC_STRING)
 		return -1;
-	return nc_get_att_double(nc, var, att, v) == NC_NOERR ? 0 : -1;
+	return api->get_att_double(nc, var, att, v) == NC_NOERR ? 0 : -1;
 }
 
 static int
-att_text(int nc, int var, const char *att, char *buf, size_t cap)
+att_text(const struct ncapi *api, int nc, int var, const char *att,
+    char *buf, size_t cap)
 {
 	size_t len;
 	nc_type t;
 
-	if (nc_inq_att(nc, var, att, &t, &len) != NC_NOERR || t != NC_CHAR ||
+	if (api->inq_att(nc, var, att, &t, &len) != NC_NOERR || t != NC_CHAR ||
 	    len >= cap)
 		return -1;
-	if (nc_get_att_text(nc, var, att, buf) != NC_NOERR)
+	if (api->get_att_text(nc, var, att, buf) != NC_NOERR)
 		return -1;
 	buf[len] = '\0';
 	return 0;
@@ -179,6 +244,7 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	int classic = len >= 3 && memcmp(buf, "CDF", 3) == 0;
 	nc_type type;
 	rc_grid *g = NULL;
+	struct ncapi lib, *api = &lib;
 
 	if (o != NULL && o->have_l) {
 		lx = o->lx;
@@ -187,15 +253,20 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	if (classic && (len < 4 || !classic_header_ok(buf, len)))
 		return rc_seterr(err, "not a readable netCDF file: corrupt or "
 		    "truncated header");
-	if ((st = nc_open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
-	    NC_NOERR)
-		return rc_seterr(err, "not a readable netCDF file: %s", nc_strerror(st));
-	if (nc_inq_varid(nc, "heights", &hv) != NC_NOERR) {
+	if (ncapi_open(api, err) != 0)
+		return -1;
+	if ((st = api->open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
+	    NC_NOERR) {
+		rc_seterr(err, "not a readable netCDF file: %s", api->strerror(st));
+		ncapi_close(api);
+		return -1;
+	}
+	if (api->inq_varid(nc, "heights", &hv) != NC_NOERR) {
 		rc_seterr(err, "netCDF file has no variable 'heights' (the "
 		    "contact.engineering convention)");
 		goto out;
 	}
-	if ((st = nc_inq_var(nc, hv, NULL, &type, &ndims, NULL, NULL)) != NC_NOERR)
+	if ((st = api->inq_var(nc, hv, NULL, &type, &ndims, NULL, NULL)) != NC_NOERR)
 		goto nc;
 	if (ndims != 2) {
 		rc_seterr(err, "netCDF: heights has %d dimensions, not 2", ndims);
@@ -205,9 +276,9 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		rc_seterr(err, "netCDF: heights is not numeric");
 		goto out;
 	}
-	if ((st = nc_inq_vardimid(nc, hv, dims)) != NC_NOERR ||
-	    (st = nc_inq_dimlen(nc, dims[0], &nx)) != NC_NOERR ||
-	    (st = nc_inq_dimlen(nc, dims[1], &ny)) != NC_NOERR)
+	if ((st = api->inq_vardimid(nc, hv, dims)) != NC_NOERR ||
+	    (st = api->inq_dimlen(nc, dims[0], &nx)) != NC_NOERR ||
+	    (st = api->inq_dimlen(nc, dims[1], &ny)) != NC_NOERR)
 		goto nc;
 	if (rc_grid_check_shape(nx, ny, 1, 1, err) != 0)
 		goto out;
@@ -220,16 +291,16 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		    nx, ny, len);
 		goto out;
 	}
-	if (nc_inq_varid(nc, "x", &xv) == NC_NOERR) {
-		att_double(nc, xv, "length", &lx);
-		att_double(nc, xv, "periodic", &per);
-		att_text(nc, xv, "length_unit", unit, sizeof(unit));
+	if (api->inq_varid(nc, "x", &xv) == NC_NOERR) {
+		att_double(api, nc, xv, "length", &lx);
+		att_double(api, nc, xv, "periodic", &per);
+		att_text(api, nc, xv, "length_unit", unit, sizeof(unit));
 	}
-	if (nc_inq_varid(nc, "y", &yv) == NC_NOERR)
-		att_double(nc, yv, "length", &ly);
+	if (api->inq_varid(nc, "y", &yv) == NC_NOERR)
+		att_double(api, nc, yv, "length", &ly);
 	if ((t = rc_malloc(n * sizeof(double), err)) == NULL)
 		goto out;
-	if ((st = nc_get_var_double(nc, hv, t)) != NC_NOERR)
+	if ((st = api->get_var_double(nc, hv, t)) != NC_NOERR)
 		goto nc;
 	if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 		goto out;
@@ -240,7 +311,7 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	for (size_t i = 0; i < nx; i++)
 		for (size_t j = 0; j < ny; j++)
 			g->z[j * nx + i] = t[i * ny + j];
-	if (att_double(nc, hv, "_FillValue", &fill) != 0)
+	if (att_double(api, nc, hv, "_FillValue", &fill) != 0)
 		fill = NAN;
 	for (size_t k = 0; k < n; k++)
 		if (isnan(g->z[k]) || g->z[k] == fill) {
@@ -256,11 +327,12 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	g = NULL;
 	goto out;
 nc:
-	nc_fail(err, "heights", st);
+	nc_fail(api, err, "heights", st);
 out:
 	rc_grid_free(g);
 	free(t);
-	nc_close(nc);
+	api->close(nc);
+	ncapi_close(api);
 	return r;
 }
 
@@ -273,6 +345,7 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 	const char *unit = g->unit;
 	NC_memio mem = { 0, NULL, 0 };
 	int r = -1, open = 0;
+	struct ncapi lib, *api = &lib;
 
 	/* One unit for all: the heights' (they stay bit for bit). */
 	if (g->z_unit[0] != '\0' && strcmp(g->z_unit, g->unit) != 0) {
@@ -287,63 +360,70 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		ly = ly / from * to;
 		unit = g->z_unit;
 	}
-	if ((t = rc_malloc((n > nx + ny ? n : nx + ny) * sizeof(double), err)) ==
-	    NULL)
+	if (ncapi_open(api, err) != 0)
 		return -1;
-	if ((st = nc_create_mem("output.nc", NC_64BIT_OFFSET, 8 * n + 4096, &nc))
+	if ((t = rc_malloc((n > nx + ny ? n : nx + ny) * sizeof(double), err)) ==
+	    NULL) {
+		ncapi_close(api);
+		return -1;
+	}
+	if ((st = api->create_mem("output.nc", NC_64BIT_OFFSET, 8 * n + 4096, &nc))
 	    != NC_NOERR) {
+		nc_fail(api, err, "create", st);
 		free(t);
-		return nc_fail(err, "create", st);
+		ncapi_close(api);
+		return -1;
 	}
 	open = 1;
-	if ((st = nc_def_dim(nc, "x", nx, &dx)) != NC_NOERR ||
-	    (st = nc_def_dim(nc, "y", ny, &dy)) != NC_NOERR ||
-	    (st = nc_def_var(nc, "x", NC_DOUBLE, 1, &dx, &xv)) != NC_NOERR ||
-	    (st = nc_def_var(nc, "y", NC_DOUBLE, 1, &dy, &yv)) != NC_NOERR)
+	if ((st = api->def_dim(nc, "x", nx, &dx)) != NC_NOERR ||
+	    (st = api->def_dim(nc, "y", ny, &dy)) != NC_NOERR ||
+	    (st = api->def_var(nc, "x", NC_DOUBLE, 1, &dx, &xv)) != NC_NOERR ||
+	    (st = api->def_var(nc, "y", NC_DOUBLE, 1, &dy, &yv)) != NC_NOERR)
 		goto nc;
 	dims[0] = dx;
 	dims[1] = dy;
-	if ((st = nc_def_var(nc, "heights", NC_DOUBLE, 2, dims, &hv)) != NC_NOERR)
+	if ((st = api->def_var(nc, "heights", NC_DOUBLE, 2, dims, &hv)) != NC_NOERR)
 		goto nc;
 	for (int k = 0; k < 2; k++) {
 		int v = k ? yv : xv;
 		double l = k ? ly : lx;
 
-		if ((st = nc_put_att_double(nc, v, "length", NC_DOUBLE, 1, &l)) !=
-		    NC_NOERR || (st = nc_put_att_int(nc, v, "periodic", NC_INT, 1,
+		if ((st = api->put_att_double(nc, v, "length", NC_DOUBLE, 1, &l)) !=
+		    NC_NOERR || (st = api->put_att_int(nc, v, "periodic", NC_INT, 1,
 		    &per)) != NC_NOERR)
 			goto nc;
-		if (unit[0] != '\0' && (st = nc_put_att_text(nc, v, "length_unit",
+		if (unit[0] != '\0' && (st = api->put_att_text(nc, v, "length_unit",
 		    strlen(unit), unit)) != NC_NOERR)
 			goto nc;
 	}
-	if ((st = nc_enddef(nc)) != NC_NOERR)
+	if ((st = api->enddef(nc)) != NC_NOERR)
 		goto nc;
 	for (size_t i = 0; i < nx; i++)
 		t[i] = ((double)i + 0.5) * lx / (double)nx;
-	if ((st = nc_put_var_double(nc, xv, t)) != NC_NOERR)
+	if ((st = api->put_var_double(nc, xv, t)) != NC_NOERR)
 		goto nc;
 	for (size_t j = 0; j < ny; j++)
 		t[j] = ((double)j + 0.5) * ly / (double)ny;
-	if ((st = nc_put_var_double(nc, yv, t)) != NC_NOERR)
+	if ((st = api->put_var_double(nc, yv, t)) != NC_NOERR)
 		goto nc;
 	for (size_t i = 0; i < nx; i++)
 		for (size_t j = 0; j < ny; j++)
 			t[i * ny + j] = g->valid && !g->valid[j * nx + i] ? NAN :
 			    g->z[j * nx + i];
-	if ((st = nc_put_var_double(nc, hv, t)) != NC_NOERR)
+	if ((st = api->put_var_double(nc, hv, t)) != NC_NOERR)
 		goto nc;
 	open = 0;
-	if ((st = nc_close_memio(nc, &mem)) != NC_NOERR)
+	if ((st = api->close_memio(nc, &mem)) != NC_NOERR)
 		goto nc;
 	r = rc_io_write(fp, mem.memory, mem.size, err);
 	goto out;
 nc:
-	nc_fail(err, "write", st);
+	nc_fail(api, err, "write", st);
 out:
 	if (open)
-		nc_abort(nc);
+		api->abort(nc);
 	free(mem.memory);
 	free(t);
+	ncapi_close(api);
 	return r;
 }
