@@ -59,6 +59,12 @@ vg gfmd-cg gfmd-solve -q -j 1 --method cg -p 0.1 -o "$tmp/cg.tsv" "$tmp/s.surf"
 report gfmd-cg $?
 vg surfstat-mask surfstat -j 1 --mask "$tmp/c.surf" -o "$tmp/m.tsv" "$tmp/s.surf"
 report surfstat-mask $?
+# netCDF through the loaded libnetcdf: every byte written is initialised
+# (its in-memory file once came back larger than its contents).
+vg surfwarp-nc surfwarp -j 1 --detrend plane -o "$tmp/s.nc" "$tmp/s.surf"
+report surfwarp-nc $?
+vg surfstat-nc surfstat -j 1 -o "$tmp/nc.tsv" "$tmp/s.nc"
+report surfstat-nc $?
 vg contact-stats contact-stats -q --no-extrapolate -o "$tmp/cs.tsv" "$tmp/fire.tsv"
 report contact-stats $?
 echo "valgrind: $n runs, $([ "$status" = 0 ] && echo "all clean" || echo "FAILURES")"

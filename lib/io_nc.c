@@ -42,7 +42,7 @@
 	X(strerror) X(inq_att) X(get_att_double) X(get_att_text) \
 	X(open_mem) X(inq_varid) X(inq_var) X(inq_vardimid) X(inq_dimlen) \
 	X(get_var_double) X(close) X(create_mem) X(def_dim) X(def_var) \
-	X(put_att_double) X(put_att_int) X(put_att_text) X(enddef) \
+	X(put_att_double) X(put_att_int) X(put_att_text) X(_enddef) \
 	X(put_var_double) X(close_memio) X(abort)
 
 struct ncapi {
@@ -367,7 +367,10 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		ncapi_close(api);
 		return -1;
 	}
-	if ((st = api->create_mem("output.nc", NC_64BIT_OFFSET, 8 * n + 4096, &nc))
+	/* Initial size 0: the in-memory file then grows to exactly what it
+	 * holds; a larger one would be returned whole, its unwritten tail
+	 * uninitialised. */
+	if ((st = api->create_mem("output.nc", NC_64BIT_OFFSET, 0, &nc))
 	    != NC_NOERR) {
 		nc_fail(api, err, "create", st);
 		free(t);
@@ -396,7 +399,10 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		    strlen(unit), unit)) != NC_NOERR)
 			goto nc;
 	}
-	if ((st = api->enddef(nc)) != NC_NOERR)
+	/* No free space after the header or between variables (libnetcdf's
+	 * default reserves some, which its in-memory file leaves
+	 * uninitialised: the output would differ from run to run). */
+	if ((st = api->_enddef(nc, 0, 4, 0, 4)) != NC_NOERR)
 		goto nc;
 	for (size_t i = 0; i < nx; i++)
 		t[i] = ((double)i + 0.5) * lx / (double)nx;
