@@ -672,7 +672,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		goto out;
 	}
 	if (g != NULL)
-		r = rc_chanset_add(s, g, "", err);
+		r = rc_chanset_add(s, g, rc_io_title(g), err);
 out:
 	free(buf);
 	free(in);

@@ -103,6 +103,11 @@ typedef struct rc_chanset {
 	rc_channel *c;
 	size_t n, cap;
 } rc_chanset;
+/* The title of a single-channel file's grid: a GSF's Title field or the
+ * "# Channel:" line of Gwyddion's text export, which their readers keep as
+ * the metadata Title and channel (a grid converted from them keeps it);
+ * "" if neither. */
+const char *rc_io_title(const rc_grid *g);
 /* Append g (the set owns it from now on, also on failure). */
 int rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err);
 void rc_chanset_free(rc_chanset *s);
