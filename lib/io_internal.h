@@ -76,6 +76,10 @@ int rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err);
 int rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
     rc_err *err);
 
+/* The filled points as a header writes them: *text malloc'ed, or NULL
+ * when g has none or their list exceeds RC_FILLED_MAX (left out). */
+int rc_io_filled_text(const rc_grid *g, char **text, rc_err *err);
+
 /* The format readers (after detection) and writers. */
 rc_grid *rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 rc_grid *rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
