@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "spectral.h"
+#include "units.h"
 
 /* Below this fraction of the largest mode, power is FFT round-off. */
 #define POWER_FLOOR 1e-20
@@ -207,6 +208,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 	int rc = -1;
 
 	memset(fit, 0, sizeof(*fit));
+	memcpy(fit->unit, g->unit, sizeof(fit->unit));
 	if (g->nx < 2 || g->ny < 2)
 		return rc_seterr(err, "the self-affine fit is for maps (a profile's "
 		    "1D spectrum has another exponent): not available for %zux%zu",
@@ -389,6 +391,21 @@ field(const char *line, size_t k, char *buf, size_t len)
 	return 0;
 }
 
+/* The index of the column named want in a header line of ncol fields;
+ * ncol if there is none. */
+static size_t
+column(const char *head, size_t ncol, const char *want)
+{
+	char name[64];
+	size_t c;
+
+	for (c = 0; c < ncol; c++)
+		if (field(head, c, name, sizeof(name)) == 0 &&
+		    strcmp(name, want) == 0)
+			break;
+	return c;
+}
+
 int
 rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t *ny,
     double *lx, double *ly, rc_err *err)
@@ -397,8 +414,8 @@ rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t 
 	    "hrms", "rolloff" };
 	double v[9];
 	const char *row = strchr(text, '\n');
-	size_t hlen = row ? (size_t)(row - text) : strlen(text), ncol = 1;
-	char name[64], val[64];
+	size_t hlen = row ? (size_t)(row - text) : strlen(text), ncol = 1, unit_col;
+	char val[64];
 
 	memset(fit, 0, sizeof(*fit));
 	{
@@ -415,12 +432,8 @@ rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t 
 	for (size_t i = 0; i < hlen; i++)
 		ncol += text[i] == '\t';
 	for (size_t k = 0; k < 9; k++) {
-		size_t c;
+		size_t c = column(text, ncol, need[k]);
 		char *end;
-		for (c = 0; c < ncol; c++)
-			if (field(text, c, name, sizeof(name)) == 0 &&
-			    strcmp(name, need[k]) == 0)
-				break;
 		if (c == ncol)
 			return rc_seterr(err, "fit table lacks the column %s", need[k]);
 		if (field(row, c, val, sizeof(val)) != 0)
@@ -429,6 +442,15 @@ rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t 
 		if (end == val || *end != '\0' || !isfinite(v[k]))
 			return rc_seterr(err, "fit table: %s = '%s' is not a finite number",
 			    need[k], val);
+	}
+	/* the unit column, when there is one: the lengths' unit */
+	if ((unit_col = column(text, ncol, "unit")) < ncol) {
+		if (field(row, unit_col, val, sizeof(val)) != 0)
+			return rc_seterr(err, "fit table: no value for unit");
+		if (!rc_unit_is_length(val))
+			return rc_seterr(err, "fit table: unit '%s' is not a "
+			    "length unit (m mm um nm pm angstrom)", val);
+		snprintf(fit->unit, sizeof(fit->unit), "%s", rc_unit_canonical(val));
 	}
 	if (!(v[0] >= 1 && v[0] <= RC_GRID_MAX_DIM && v[1] >= 1 &&
 	    v[1] <= RC_GRID_MAX_DIM && v[0] == floor(v[0]) && v[1] == floor(v[1])))

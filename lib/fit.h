@@ -68,6 +68,11 @@ typedef struct rc_selfaffine_fit {
 	double fit_q_min, fit_q_max;	/* the bins used */
 	size_t n_bins;
 	double rms_residual;	/* of ln C, weighted by the bins' modes */
+	/* The length unit of every length of the fit (q in its inverse, C
+	 * in its fourth power): the grid's lateral unit, "" if it has none.
+	 * The fit reads the heights as lengths in it; the tools bring every
+	 * grid to one length unit first (units.h). */
+	char unit[32];
 } rc_selfaffine_fit;
 
 void rc_fit_opts_default(rc_fit_opts *o);
@@ -80,8 +85,9 @@ double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
 #endif
 
 /* A fit as surfstat --fit writes it (TSV: a header line, one row), read
- * back: the columns nx ny lx ly H q_r q_s hrms rolloff are required.
- * Returns 1 and fills fit, nx, ny, lx, ly if the text is such a table; 0
+ * back: the columns nx ny lx ly H q_r q_s hrms rolloff are required; a
+ * unit column, which surfstat writes when the grid has a unit, must name
+ * a length unit (units.h) and goes into fit->unit.  Returns 1 and fills fit, nx, ny, lx, ly if the text is such a table; 0
  * if it is not one (no lambda_r column in the first line: something
  * else, e.g. a grid); -1 with err set if it is one but broken. */
 int rc_fit_table_parse(const char *text, rc_selfaffine_fit *fit, size_t *nx, size_t *ny,

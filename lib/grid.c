@@ -5,6 +5,7 @@
 #include <fftw3.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -117,6 +118,7 @@ rc_grid_free(rc_grid *g)
 	free(g->history);
 	fftw_free(g->z);
 	free(g->valid);
+	free(g->filled);
 	free(g);
 }
 
@@ -156,6 +158,11 @@ rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
 			if ((c->valid = rc_calloc(rc_grid_size(g), 1, err)) == NULL)
 				goto fail;
 			memcpy(c->valid, g->valid, rc_grid_size(g));
+		}
+		if (g->filled != NULL) {
+			if ((c->filled = rc_calloc(rc_grid_size(g), 1, err)) == NULL)
+				goto fail;
+			memcpy(c->filled, g->filled, rc_grid_size(g));
 		}
 	}
 	return c;
@@ -280,6 +287,115 @@ rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err)
 	for (size_t i = 0; i < src->nmeta; i++)
 		if (rc_grid_meta_set(dst, src->meta[i].key, src->meta[i].val, err) != 0)
 			return -1;
+	return 0;
+}
+
+size_t
+rc_grid_filled_count(const rc_grid *g)
+{
+	size_t n = 0;
+
+	if (g->filled != NULL)
+		for (size_t k = 0; k < rc_grid_size(g); k++)
+			n += g->filled[k] != 0;
+	return n;
+}
+
+char *
+rc_grid_filled_format(const rc_grid *g, rc_err *err)
+{
+	size_t n = rc_grid_size(g), len = 0, cap = 64;
+	char *s = rc_malloc(cap, err), *t;
+
+	if (s == NULL)
+		return NULL;
+	s[0] = '\0';
+	for (size_t a = 0; g->filled != NULL && a < n; a++) {
+		size_t b = a;
+
+		if (!g->filled[a])
+			continue;
+		while (b + 1 < n && g->filled[b + 1])
+			b++;
+		/* two indices of at most 20 digits, '-', ',' and the NUL */
+		if (len + 44 > cap) {
+			if ((t = realloc(s, 2 * cap)) == NULL) {
+				free(s);
+				rc_seterr(err, "out of memory");
+				return NULL;
+			}
+			s = t;
+			cap *= 2;
+		}
+		len += (size_t)(a == b ? sprintf(s + len, "%s%zu", len ? "," : "", a) :
+		    sprintf(s + len, "%s%zu-%zu", len ? "," : "", a, b));
+		a = b;
+	}
+	return s;
+}
+
+/* A point index: decimal digits only; *p moves past them. */
+static int
+parse_index(const char **p, size_t *v)
+{
+	size_t x = 0;
+
+	if (**p < '0' || **p > '9')
+		return -1;
+	for (; **p >= '0' && **p <= '9'; (*p)++) {
+		if (x > (SIZE_MAX - 9) / 10)
+			return -1;
+		x = 10 * x + (size_t)(**p - '0');
+	}
+	*v = x;
+	return 0;
+}
+
+int
+rc_grid_filled_parse(rc_grid *g, const char *text, rc_err *err)
+{
+	size_t n = rc_grid_size(g), next = 0, a, b;
+	const char *p = text;
+	unsigned char *f;
+
+	free(g->filled);
+	g->filled = NULL;
+	if (*p == '\0')
+		return 0;
+	if ((f = rc_calloc(n, 1, err)) == NULL)
+		return -1;
+	for (;;) {
+		const char *at = p;
+		int bad = parse_index(&p, &a) != 0;
+
+		b = a;
+		if (!bad && *p == '-') {
+			p++;
+			bad = parse_index(&p, &b) != 0;
+		}
+		if (bad || (*p != ',' && *p != '\0')) {
+			free(f);
+			return rc_seterr(err, "filled: '%.24s' at character %zu is not "
+			    "a range A-B or an index A (digits, ranges separated by "
+			    "commas)", at, (size_t)(at - text) + 1);
+		}
+		if (b < a || a < next || b >= n) {
+			char what[48];
+
+			free(f);
+			snprintf(what, sizeof(what), a == b ? "index %zu" :
+			    "range %zu-%zu", a, b);
+			return rc_seterr(err, "filled: %s %s", what, b < a ?
+			    "runs backwards" : a < next ? "does not follow the one "
+			    "before it (ranges increase and do not overlap)" :
+			    "lies beyond the last point of the grid");
+		}
+		memset(f + a, 1, b - a + 1);
+		next = b + 1;
+		if (*p++ == '\0')
+			break;
+	}
+	g->filled = f;
 	return 0;
 }
 

@@ -19,6 +19,14 @@
  *
  * Missing points: valid is NULL when every point is valid; otherwise nx*ny
  * flags, 1 valid and 0 missing, and z is NaN at every missing point.
+ *
+ * Filled points: filled is NULL, or nx*ny flags, 1 where the value was
+ * made up by filling a missing point (rc_fill_harmonic) instead of
+ * measured; a filled point is valid.  The flags follow the values: steps
+ * in place keep them, a crop or a transpose maps them, a resample (whose
+ * values mix many points) drops them; results computed from the heights
+ * (spectra, pressures) do not have them.  Files keep them as a list of
+ * index ranges (rc_grid_filled_format; surf(5) says which formats).
  */
 #ifndef RC_GRID_H
 #define RC_GRID_H
@@ -54,6 +62,7 @@ typedef struct rc_grid {
 	char z_unit[32];	/* unit of the values; "" = unknown or as unit */
 	int periodic;		/* 1 one period of an infinite surface, 0 a patch */
 	unsigned char *valid;	/* NULL, or nx*ny flags: 0 = missing (z NaN) */
+	unsigned char *filled;	/* NULL, or nx*ny flags: 1 = filled, not measured */
 	rc_kv *meta;		/* generation parameters, in insertion order */
 	size_t nmeta;
 	char **history;		/* one command line per entry, oldest first */
@@ -73,8 +82,8 @@ rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
  * metadata and history (no mask). */
 rc_grid *rc_grid_new_like(const rc_grid *g, size_t nx, size_t ny, double lx,
     double ly, rc_err *err);
-/* Same shape, units, periodic flag, metadata and history; values and the
- * missing-point mask copied if copy_values. */
+/* Same shape, units, periodic flag, metadata and history; values, the
+ * missing-point and the filled-point masks copied if copy_values. */
 rc_grid *rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err);
 /* Check nx, ny, nx*ny, lx, ly before allocating; message names the problem. */
 int rc_grid_check_shape(size_t nx, size_t ny, double lx, double ly, rc_err *err);
@@ -95,6 +104,17 @@ void rc_grid_meta_unset(rc_grid *g, const char *key);
 /* 1 and *v set if the key exists and parses as a number, else 0. */
 int rc_grid_meta_getd(const rc_grid *g, const char *key, double *v);
 int rc_grid_meta_copy(rc_grid *dst, const rc_grid *src, rc_err *err);
+
+/* The filled points as text: comma-separated ranges of point indices
+ * k = j nx + i, "A-B" for A <= k <= B or "A" alone, increasing and not
+ * touching, e.g. "5,130-141,258-269"; "" when there is none.  Malloc'ed;
+ * NULL (err set) when out of memory.  A hole of m rows costs m ranges. */
+char *rc_grid_filled_format(const rc_grid *g, rc_err *err);
+/* Such text (ranges increasing, disjoint, inside the grid; no blanks)
+ * into g->filled, replacing it; "" leaves none. */
+int rc_grid_filled_parse(rc_grid *g, const char *text, rc_err *err);
+/* How many points are filled (0 if filled is NULL). */
+size_t rc_grid_filled_count(const rc_grid *g);
 
 /* Append a command line; a control character other than tab is stored as
  * the four characters \xNN, so that any command line can be recorded and

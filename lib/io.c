@@ -495,8 +495,13 @@ check_values(rc_grid *g, const rc_read_opts *o, rc_err *err)
 			    k % g->nx, k / g->nx);
 	}
 	if (g->valid != NULL)
-		for (size_t k = 0; k < n; k++)
+		for (size_t k = 0; k < n; k++) {
 			g->valid[k] = !isnan(g->z[k]);
+			/* a filled point has a value */
+			if (g->filled != NULL && g->filled[k] && !g->valid[k])
+				return rc_seterr(err, "point i=%zu, j=%zu is listed as "
+				    "filled but is missing (NaN)", k % g->nx, k / g->nx);
+		}
 	if (g->kind == RC_KIND_MASK)
 		for (size_t k = 0; k < n; k++)
 			if (g->z[k] != 0 && g->z[k] != 1)
@@ -672,7 +677,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		goto out;
 	}
 	if (g != NULL)
-		r = rc_chanset_add(s, g, "", err);
+		r = rc_chanset_add(s, g, rc_io_title(g), err);
 out:
 	free(buf);
 	free(in);
@@ -855,6 +860,38 @@ rc_format_name(enum rc_format f)
 	case RC_FMT_NC: return "nc";
 	}
 	return "unknown";
+}
+
+int
+rc_io_filled_text(const rc_grid *g, char **text, rc_err *err)
+{
+	*text = NULL;
+	if (g->filled == NULL)
+		return 0;
+	if ((*text = rc_grid_filled_format(g, err)) == NULL)
+		return -1;
+	if ((*text)[0] == '\0' || strlen(*text) > RC_FILLED_MAX) {
+		free(*text);
+		*text = NULL;
+	}
+	return 0;
+}
+
+int
+rc_format_keeps_filled(const rc_grid *g, enum rc_format fmt, rc_err *err)
+{
+	char *text;
+	int keeps;
+
+	if (rc_grid_filled_count(g) == 0)
+		return 1;
+	if (fmt != RC_FMT_SURF && fmt != RC_FMT_TXT && fmt != RC_FMT_GSF)
+		return 0;
+	if (rc_io_filled_text(g, &text, err) != 0)
+		return -1;
+	keeps = text != NULL;
+	free(text);
+	return keeps;
 }
 
 int

@@ -85,6 +85,15 @@ rc_grid *rc_grid_read_stream(FILE *fp, const rc_read_opts *o, rc_err *err);
 int rc_format_from_name(const char *path);
 const char *rc_format_name(enum rc_format f);
 
+/* The longest list of filled points (rc_grid_filled_format) a header
+ * holds: 512 KiB, some 40000 ranges.  A longer one is left out. */
+#define RC_FILLED_MAX ((size_t)1 << 19)
+/* 1 if writing g as fmt keeps its filled points, or it has none: .surf,
+ * .txt and .gsf keep them while their list fits in RC_FILLED_MAX; .npy,
+ * .x3p and .nc have no place for them.  0 if they would be lost (a tool
+ * says so), -1 (err set) when out of memory. */
+int rc_format_keeps_filled(const rc_grid *g, enum rc_format fmt, rc_err *err);
+
 /* Atomic (see atomic.h); "-" or NULL writes standard output. */
 int rc_grid_write(const rc_grid *g, const char *path, enum rc_format fmt,
     rc_err *err);

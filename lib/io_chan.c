@@ -31,6 +31,16 @@ rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err)
 	return 0;
 }
 
+const char *
+rc_io_title(const rc_grid *g)
+{
+	const char *t = rc_grid_meta_get(g, "Title");
+
+	if (t == NULL)
+		t = rc_grid_meta_get(g, "channel");
+	return t != NULL ? t : "";
+}
+
 void
 rc_chanset_free(rc_chanset *s)
 {

@@ -9,7 +9,9 @@
  * metre unit are written in metres.  Our kind, unit, metadata and history
  * travel as extra keys (surf.kind, surf.unit, surf.meta.KEY, surf.history),
  * which Gwyddion shows as metadata; so do the value unit and the periodic
- * flag (surf.z_unit, surf.periodic).  A file without surf.kind is
+ * flag (surf.z_unit, surf.periodic) and the filled points (surf.filled,
+ * one line: Gwyddion keeps the last of repeated keys).  A file without
+ * surf.kind is
  * foreign (Gwyddion's, of a measurement): its units are taken as they
  * are, and it is not periodic.  Missing points are NaN values.
  */
@@ -58,8 +60,8 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	size_t n = rc_grid_size(g), len = strlen(MAGIC);
 	const char *xyunit = g->unit, *zunit = g->z_unit;
 	const char *zfrom = g->z_unit[0] ? g->z_unit : g->unit;
-	int zlength = 0;
-	char num[64];
+	int zlength = 0, r;
+	char num[64], *filled;
 	double *d;
 
 	if (zunit[0] == '\0' && rc_kind_is_length(g->kind))
@@ -109,7 +111,11 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	for (size_t i = 0; i < g->nhistory; i++)
 		if (put(fp, &len, "surf.history", g->history[i], err) != 0)
 			return -1;
-	if (rc_io_write(fp, nul, 4 - len % 4, err) != 0)
+	if (rc_io_filled_text(g, &filled, err) != 0)
+		return -1;
+	r = filled != NULL ? put(fp, &len, "surf.filled", filled, err) : 0;
+	free(filled);
+	if (r != 0 || rc_io_write(fp, nul, 4 - len % 4, err) != 0)
 		return -1;
 	if (!zlength)
 		return rc_io_write_values(fp, g->z, n, 4, err);
@@ -326,6 +332,12 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	/* Ours say; a foreign file is a measured patch. */
 	per = lookup(f, nf, "surf.periodic");
 	g->periodic = own && (per == NULL || strcmp(per, "0") != 0);
+	if ((v = lookup(f, nf, "surf.filled")) != NULL &&
+	    rc_grid_filled_parse(g, v, err) != 0) {
+		rc_grid_free(g);
+		g = NULL;
+		goto out;
+	}
 	for (size_t i = 0; i < nf; i++) {
 		const char *key = f[i].key;
 		int r = 0;

@@ -76,6 +76,10 @@ int rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err);
 int rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
     rc_err *err);
 
+/* The filled points as a header writes them: *text malloc'ed, or NULL
+ * when g has none or their list exceeds RC_FILLED_MAX (left out). */
+int rc_io_filled_text(const rc_grid *g, char **text, rc_err *err);
+
 /* The format readers (after detection) and writers. */
 rc_grid *rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 rc_grid *rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
@@ -103,6 +107,11 @@ typedef struct rc_chanset {
 	rc_channel *c;
 	size_t n, cap;
 } rc_chanset;
+/* The title of a single-channel file's grid: a GSF's Title field or the
+ * "# Channel:" line of Gwyddion's text export, which their readers keep as
+ * the metadata Title and channel (a grid converted from them keeps it);
+ * "" if neither. */
+const char *rc_io_title(const rc_grid *g);
 /* Append g (the set owns it from now on, also on failure). */
 int rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err);
 void rc_chanset_free(rc_chanset *s);

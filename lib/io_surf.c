@@ -2,7 +2,9 @@
 /* io_surf.c - the native format: a text header of "key = value" lines,
  * then nx*ny float64 little-endian values (see surf(5)).  Missing points
  * are NaN values (rc_grid_read_finish turns them into the mask); periodic
- * is absent from files written before it existed, which were periodic. */
+ * is absent from files written before it existed, which were periodic.
+ * Filled points are the "filled" list, last in the header so that its
+ * beginning stays the grid's description however long the list is. */
 #include "io_internal.h"
 
 #include <stdlib.h>
@@ -55,9 +57,12 @@ static int
 write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 {
 	struct buf head = { 0 }, tail = { 0 };
-	char num[64], line[96];
+	char num[64], line[96], *filled = NULL;
 	size_t offset, total, pad;
 	int r = -1;
+
+	if (rc_io_filled_text(g, &filled, err) != 0)
+		return -1;
 
 	add(&head, MAGIC "\n# rough-contact grid; float64 LE values from "
 	    "data_offset on; see surf(5)\n");
@@ -82,6 +87,8 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 	}
 	for (size_t i = 0; i < g->nhistory; i++)
 		addkv(&tail, "history", g->history[i]);
+	if (filled != NULL)
+		addkv(&tail, "filled", filled);
 	if (head.bad || tail.bad) {
 		rc_seterr(err, "out of memory");
 		goto out;
@@ -114,6 +121,7 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 out:
 	free(head.s);
 	free(tail.s);
+	free(filled);
 	return r;
 }
 
@@ -153,17 +161,19 @@ split(char *line, char **key, char **val)
 }
 
 enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_ZUNIT,
-	K_PERIODIC, K_N };
+	K_PERIODIC, K_FILLED, K_N };
 static const char *keys[K_N] = {
 	"nx", "ny", "lx", "ly", "unit", "kind", "encoding", "data_offset",
-	"z_unit", "periodic"
+	"z_unit", "periodic", "filled"
 };
 /* Keys a header may leave out: unit and z_unit (unknown), data_offset
- * (where the header ends), periodic (1: files from before the key). */
+ * (where the header ends), periodic (1: files from before the key),
+ * filled (no filled point). */
 static int
 optional(int k)
 {
-	return k == K_UNIT || k == K_OFFSET || k == K_ZUNIT || k == K_PERIODIC;
+	return k == K_UNIT || k == K_OFFSET || k == K_ZUNIT || k == K_PERIODIC ||
+	    k == K_FILLED;
 }
 
 /* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
@@ -352,7 +362,9 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		*header_ny = ny;
 		if ((g = rc_grid_new(nx, 1, lx, ly, err)) == NULL)
 			goto fail;
-	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
+	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL ||
+	    (vals[K_FILLED] != NULL &&
+	    rc_grid_filled_parse(g, vals[K_FILLED], err) != 0))
 		goto fail;
 	g->kind = (enum rc_kind)kind;
 	if (vals[K_UNIT] != NULL)

@@ -3,7 +3,7 @@
  * along the line, j = 0 first.  Lines starting with '#' are comments (as
  * numpy.loadtxt has them); "# key = value" comments carry what the other
  * formats keep in their headers (nx, ny, lx, ly, unit, z_unit, periodic,
- * kind, meta.KEY, history), so a round trip loses nothing.  Values are
+ * kind, meta.KEY, history, filled), so a round trip loses nothing.  Values are
  * printed with %.17g, which reads back exactly; missing points are "nan".
  *
  * Read besides: the header of Gwyddion's ASCII matrix export ("# Width:
@@ -31,9 +31,11 @@
 int
 rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
-	char num[64];
+	char num[64], *filled;
 	int bad = 0;
 
+	if (rc_io_filled_text(g, &filled, err) != 0)
+		return -1;
 	bad |= fprintf(fp, "%s\n# nx = %zu\n# ny = %zu\n", MAGIC, g->nx, g->ny) < 0;
 	rc_format_double(num, sizeof(num), g->lx);
 	bad |= fprintf(fp, "# lx = %s\n", num) < 0;
@@ -50,6 +52,9 @@ rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 		    g->meta[i].val) < 0;
 	for (size_t i = 0; i < g->nhistory; i++)
 		bad |= fprintf(fp, "# history = %s\n", g->history[i]) < 0;
+	if (filled != NULL)
+		bad |= fprintf(fp, "# filled = %s\n", filled) < 0;
+	free(filled);
 	for (size_t j = 0; j < g->ny && !bad; j++) {
 		const double *row = g->z + j * g->nx;
 
@@ -75,6 +80,7 @@ struct header {
 	char wunit[32], hunit[32];
 	char **mkey, **mval, **hist;
 	size_t nmeta, nhist;
+	char *filled;		/* our list of filled points */
 };
 
 static int
@@ -221,6 +227,11 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 		if (push(&h->hist, h->nhist, val) != 0)
 			return rc_seterr(err, "out of memory");
 		h->nhist++;
+	} else if (strcmp(key, "filled") == 0) {
+		if (h->filled != NULL)
+			return rc_seterr(err, "line %zu: filled given twice", lineno);
+		if ((h->filled = strdup(val)) == NULL)
+			return rc_seterr(err, "out of memory");
 	}
 	return 0;
 }
@@ -518,6 +529,8 @@ token:
 	for (size_t i = 0; i < h.nhist; i++)
 		if (rc_grid_history_add(g, h.hist[i], err) != 0)
 			goto fail;
+	if (h.filled != NULL && rc_grid_filled_parse(g, h.filled, err) != 0)
+		goto fail;
 	goto out;
 fail:
 	rc_grid_free(g);
@@ -532,6 +545,7 @@ out:
 	free(h.mkey);
 	free(h.mval);
 	free(h.hist);
+	free(h.filled);
 	free(cline);
 	free(v);
 	return g;

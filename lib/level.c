@@ -284,7 +284,9 @@ rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
 	if (nfilled != NULL)
 		*nfilled = 0;
 	if (g->valid == NULL)
-		return rc_grid_meta_set(g, "filled_points", "0", err);
+		/* nothing to fill; an earlier fill's points stay filled */
+		return rc_grid_meta_setf(g, "filled_points", err, "%zu",
+		    rc_grid_filled_count(g));
 	for (size_t k = 0; k < n; k++) {
 		if (g->valid[k]) {
 			nvalid++;
@@ -337,6 +339,15 @@ rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
 		for (size_t k = 0; k < n; k++)
 			mask[k] = !g->valid[k];
 	}
+	/* The grid remembers which points are made up (added to those of
+	 * an earlier fill). */
+	if (nmiss > 0 && g->filled == NULL &&
+	    (g->filled = rc_calloc(n, 1, err)) == NULL) {
+		free(mask);
+		return -1;
+	}
+	for (size_t k = 0; k < n && nmiss > 0; k++)
+		g->filled[k] |= !g->valid[k];
 	free(g->valid);
 	g->valid = NULL;
 	if (filled != NULL)
@@ -345,17 +356,21 @@ rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
 		free(mask);
 	if (nfilled != NULL)
 		*nfilled = nmiss;
-	return rc_grid_meta_setf(g, "filled_points", err, "%zu", nmiss);
+	return rc_grid_meta_setf(g, "filled_points", err, "%zu",
+	    rc_grid_filled_count(g));
 }
 
-/* A new grid of nx x ny like g, with a mask if g has one. */
+/* A new grid of nx x ny like g, with a missing-point and a filled-point
+ * mask where g has them. */
 static rc_grid *
 like(const rc_grid *g, size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
 	rc_grid *c = rc_grid_new_like(g, nx, ny, lx, ly, err);
 
-	if (c != NULL && g->valid != NULL &&
-	    (c->valid = rc_calloc(nx * ny, 1, err)) == NULL) {
+	if (c != NULL && ((g->valid != NULL &&
+	    (c->valid = rc_calloc(nx * ny, 1, err)) == NULL) ||
+	    (g->filled != NULL &&
+	    (c->filled = rc_calloc(nx * ny, 1, err)) == NULL))) {
 		rc_grid_free(c);
 		return NULL;
 	}
@@ -385,9 +400,24 @@ rc_crop(const rc_grid *g, size_t x0, size_t x1, size_t y0, size_t y1,
 		memcpy(c->z + j * nx, g->z + (j + y0) * g->nx + x0, nx * sizeof(double));
 		if (g->valid != NULL)
 			memcpy(c->valid + j * nx, g->valid + (j + y0) * g->nx + x0, nx);
+		if (g->filled != NULL)
+			memcpy(c->filled + j * nx, g->filled + (j + y0) * g->nx + x0, nx);
 	}
 	if (nx != g->nx || ny != g->ny)
 		c->periodic = 0;
+	/* filled_points counts the filled points the crop kept */
+	if (g->filled != NULL) {
+		size_t nf = rc_grid_filled_count(c);
+
+		if (nf == 0) {
+			free(c->filled);
+			c->filled = NULL;
+		}
+		if (rc_grid_meta_setf(c, "filled_points", err, "%zu", nf) != 0) {
+			rc_grid_free(c);
+			return NULL;
+		}
+	}
 	return c;
 }
 
@@ -403,6 +433,8 @@ rc_transpose(const rc_grid *g, rc_err *err)
 			c->z[i * g->ny + j] = g->z[j * g->nx + i];
 			if (g->valid != NULL)
 				c->valid[i * g->ny + j] = g->valid[j * g->nx + i];
+			if (g->filled != NULL)
+				c->filled[i * g->ny + j] = g->filled[j * g->nx + i];
 		}
 	return c;
 }

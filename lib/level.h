@@ -54,17 +54,21 @@ const char *rc_align_name(enum rc_align a);
 int rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err);
 /* Align every row; rows without a valid point are left alone. */
 int rc_align_rows(rc_grid *g, enum rc_align kind, rc_err *err);
-/* Fill the missing points harmonically; afterwards g->valid is NULL.
- * *filled (may be NULL) gets a malloc'ed nx*ny mask, 1 where a point was
- * filled, or NULL when nothing was missing; *nfilled the count.  The count
- * is also recorded in the metadata as filled_points. */
+/* Fill the missing points harmonically; afterwards g->valid is NULL and
+ * g->filled marks them (with the points of an earlier fill).  *filled (may
+ * be NULL) gets a malloc'ed nx*ny mask, 1 where a point was filled by this
+ * call, or NULL when nothing was missing; *nfilled their count.  The
+ * number of points g->filled marks is recorded in the metadata as
+ * filled_points. */
 int rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
     rc_err *err);
 /* Points x0 <= i < x1, y0 <= j < y1 as a new grid (a finite patch of the
- * surface unless it is all of a periodic one). */
+ * surface unless it is all of a periodic one), with the missing and the
+ * filled points among them (filled_points then counts those). */
 rc_grid *rc_crop(const rc_grid *g, size_t x0, size_t x1, size_t y0, size_t y1,
     rc_err *err);
-/* Swap x and y: value (i, j) of the result is value (j, i) of g. */
+/* Swap x and y: value (i, j) of the result is value (j, i) of g, and so
+ * are its missing and filled flags. */
 rc_grid *rc_transpose(const rc_grid *g, rc_err *err);
 
 #endif

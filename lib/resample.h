@@ -14,6 +14,10 @@
  * y), so the result never extrapolates; lx' = nx' dx'.  An axis of fewer
  * than 3 points is left as it is.  Linear functions are reproduced to
  * round-off.  Grids with missing points are refused (fill them first).
+ * The result has no filled-point flags: every new value mixes many old
+ * ones (all of them, spectrally), so none is measured or filled alone;
+ * the metadata filled_points stays, the count of the grid that was
+ * filled.
  */
 #ifndef RC_RESAMPLE_H
 #define RC_RESAMPLE_H

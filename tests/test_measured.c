@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_measured.c - what a grid knows besides its values: units and their
- * conversion, the periodic flag and the wrap-around check, missing points;
- * kept by every format that can, and the text reader's Gwyddion header and
- * columns, the npy axis order. */
+ * conversion, the periodic flag and the wrap-around check, missing and
+ * filled points; kept by every format that can, and the text reader's
+ * Gwyddion header and columns, the npy axis order. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +10,8 @@
 
 #include "gridcheck.h"
 #include "io.h"
+#include "level.h"
+#include "resample.h"
 #include "stats.h"
 #include "testlib.h"
 #include "units.h"
@@ -354,6 +356,166 @@ test_npy_order(void)
 	rc_grid_free(g);
 }
 
+/* Filled points: --fill marks them; the list reads back exactly in the
+ * formats that keep it, follows crops and transposes, and is dropped by
+ * resampling and by the formats without a place for it. */
+static void
+test_filled(void)
+{
+	static const char *ext[] = { "surf", "npy", "gsf", "txt", "x3p", "nc" };
+	const size_t nx = 40, ny = 30, n = nx * ny;
+	unsigned char hole[40 * 30];
+	size_t nholes = 0;
+	rc_err err;
+	rc_grid *g = rc_grid_new(nx, ny, 4, 3, &err), *c;
+	char *text;
+	int same;
+
+	strcpy(g->unit, "um");
+	g->periodic = 0;
+	/* a 10 x 9 hole, a whole row, scattered points, the first and the
+	 * last point */
+	for (size_t k = 0; k < n; k++) {
+		size_t i = k % nx, j = k / nx;
+
+		hole[k] = (i >= 5 && i < 15 && j >= 3 && j < 12) || j == 20 ||
+		    k % 97 == 13 || k == 0 || k == n - 1;
+		g->z[k] = hole[k] ? NAN : sin(0.3 * (double)i) * cos(0.2 * (double)j);
+		nholes += hole[k];
+	}
+	test_int(rc_grid_read_finish(g, NULL, &err), 0, "holes are missing points");
+	test_int(rc_fill_harmonic(g, NULL, NULL, &err), 0, "fill");
+	same = g->filled != NULL && g->valid == NULL;
+	for (size_t k = 0; same && k < n; k++)
+		same = g->filled[k] == hole[k];
+	test_true(same, "the filled mask is the holes");
+	test_true(rc_grid_meta_get(g, "filled_points") != NULL &&
+	    (size_t)atol(rc_grid_meta_get(g, "filled_points")) == nholes,
+	    "filled_points counts them (%zu)", nholes);
+	/* one range per row of the hole: the list stays short */
+	text = rc_grid_filled_format(g, &err);
+	test_true(text != NULL && strncmp(text, "0,13,110,125-134,165-174,", 25) == 0 &&
+	    strstr(text, ",800-839,") != NULL && strlen(text) < 300 &&
+	    strcmp(text + strlen(text) - 5, ",1199") == 0,
+	    "the list: ranges of indices (%.60s...)", text ? text : "");
+	free(text);
+
+	for (int f = 0; f < 6; f++) {
+		char name[16];
+		int keeps = f == RC_FMT_SURF || f == RC_FMT_GSF || f == RC_FMT_TXT;
+		rc_grid *r;
+
+		snprintf(name, sizeof(name), "filled.%s", ext[f]);
+		test_int(rc_format_keeps_filled(g, (enum rc_format)f, &err), keeps,
+		    "%s keeps the filled points: %d", name, keeps);
+		if (rc_grid_write(g, tmp(name), (enum rc_format)f, &err) != 0 ||
+		    (r = rc_grid_read(tmp(name), NULL, &err)) == NULL) {
+			test_true(0, "%s: %s", name, err.msg);
+			continue;
+		}
+		same = (r->filled != NULL) == keeps;
+		for (size_t k = 0; same && keeps && k < n; k++)
+			same = r->filled[k] == hole[k];
+		test_true(same, keeps ? "%s: the filled mask reads back exactly" :
+		    "%s: no filled mask", name);
+		rc_grid_free(r);
+	}
+
+	/* the shape kept: a copy and a step in place keep it */
+	c = rc_grid_clone(g, 1, &err);
+	rc_detrend(c, RC_DETREND_PLANE, NULL, &err);
+	test_true(c->filled != NULL && memcmp(c->filled, hole, n) == 0,
+	    "clone and detrend keep the mask");
+	rc_grid_free(c);
+	/* a crop keeps the filled points inside it and counts them */
+	c = rc_crop(g, 10, 30, 5, 25, &err);
+	same = c != NULL && c->filled != NULL;
+	for (size_t k = 0; same && k < 400; k++)
+		same = c->filled[k] == hole[(k / 20 + 5) * nx + k % 20 + 10];
+	test_true(same, "crop maps the mask");
+	test_true(c != NULL && (size_t)atol(rc_grid_meta_get(c, "filled_points")) ==
+	    rc_grid_filled_count(c), "crop: filled_points = %zu", c ?
+	    rc_grid_filled_count(c) : 0);
+	rc_grid_free(c);
+	c = rc_crop(g, 20, 30, 25, 29, &err);
+	test_true(c != NULL && c->filled == NULL &&
+	    strcmp(rc_grid_meta_get(c, "filled_points"), "0") == 0,
+	    "a crop without filled points has no mask");
+	rc_grid_free(c);
+	c = rc_transpose(g, &err);
+	same = c != NULL && c->filled != NULL;
+	for (size_t k = 0; same && k < n; k++)
+		same = c->filled[(k % nx) * ny + k / nx] == hole[k];
+	test_true(same, "transpose maps the mask");
+	rc_grid_free(c);
+	c = rc_resample(g, 0.05, 0.05, &err);
+	test_true(c != NULL && c->filled == NULL &&
+	    rc_grid_meta_get(c, "filled_points") != NULL,
+	    "resample drops the mask, keeps the count");
+	rc_grid_free(c);
+	/* a second fill adds to the mask */
+	g->z[1] = NAN;
+	rc_grid_read_finish(g, NULL, &err);
+	rc_fill_harmonic(g, NULL, NULL, &err);
+	test_true(g->filled[0] && g->filled[1] && g->filled[n - 1] &&
+	    rc_grid_filled_count(g) == nholes + 1, "a second fill adds its point");
+	rc_grid_free(g);
+
+	/* the text: parsed strictly */
+	g = rc_grid_new(4, 3, 1, 1, &err);
+	test_int(rc_grid_filled_parse(g, "0-2,5,11", &err), 0, "parse 0-2,5,11");
+	test_true(g->filled && g->filled[0] && g->filled[2] && !g->filled[3] &&
+	    g->filled[5] && g->filled[11] && rc_grid_filled_count(g) == 5,
+	    "... five points");
+	text = rc_grid_filled_format(g, &err);
+	test_true(text && strcmp(text, "0-2,5,11") == 0, "... and back: %s", text);
+	free(text);
+	test_int(rc_grid_filled_parse(g, "", &err), 0, "an empty list");
+	test_true(g->filled == NULL, "... leaves no mask");
+	{
+		static const char *bad[] = { "3-1", "5,4", "0-2,2", "12", "0-12",
+		    "1,,2", "a", "1-", "1 ,2", "-1", "1,", "99999999999999999999999" };
+
+		for (size_t k = 0; k < sizeof(bad) / sizeof(bad[0]); k++)
+			test_true(rc_grid_filled_parse(g, bad[k], &err) != 0 &&
+			    strncmp(err.msg, "filled: ", 8) == 0 && g->filled == NULL,
+			    "'%s' refused: %s", bad[k], err.msg);
+	}
+	rc_grid_free(g);
+	/* a listed point that is missing */
+	{
+		const char *hdr = "#surf 1\nnx = 2\nny = 1\nlx = 1\nly = 1\n"
+		    "kind = height\nencoding = float64-le\nfilled = 1\nend_header\n";
+		char buf[256];
+		size_t len = strlen(hdr);
+		FILE *fp;
+
+		memcpy(buf, hdr, len);
+		memset(buf + len, 0, 8);			/* 0.0 */
+		memcpy(buf + len + 8, "\0\0\0\0\0\0\xf8\x7f", 8);	/* NaN */
+		fp = fmemopen(buf, len + 16, "rb");
+		g = rc_grid_read_stream(fp, NULL, &err);
+		fclose(fp);
+		test_true(g == NULL && strstr(err.msg, "listed as filled but is "
+		    "missing"), "a filled point that is NaN is refused: %s", err.msg);
+		rc_grid_free(g);
+	}
+	/* a list beyond RC_FILLED_MAX (a checkerboard of dropouts) is left
+	 * out of the header, and the format says it does not keep it */
+	g = rc_grid_new(512, 512, 1, 1, &err);
+	g->filled = calloc(512 * 512, 1);
+	for (size_t k = 0; k < 512 * 512; k++)
+		g->filled[k] = (k % 512 + k / 512) % 2;
+	test_int(rc_format_keeps_filled(g, RC_FMT_SURF, &err), 0,
+	    "a list of 131072 ranges does not fit");
+	test_int(rc_grid_write(g, tmp("big.surf"), RC_FMT_SURF, &err), 0,
+	    "... the grid is written");
+	c = rc_grid_read(tmp("big.surf"), NULL, &err);
+	test_true(c != NULL && c->filled == NULL, "... without the list");
+	rc_grid_free(c);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -364,5 +526,6 @@ main(void)
 	test_old_and_foreign();
 	test_text();
 	test_npy_order();
+	test_filled();
 	return test_summary();
 }

@@ -761,7 +761,7 @@ void
 tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 {
 	rc_err err;
-	int fmt = rc_format_from_name(path);
+	int fmt = rc_format_from_name(path), keep;
 
 	if (fmt < 0)
 		tool_fail(t, "%s: unknown extension; use .surf, .npy, .gsf, .txt, .x3p or .nc", path);
@@ -782,6 +782,19 @@ tool_write_grid(const struct tool *t, rc_grid *g, const char *path)
 		    err.msg);
 	/* The history line belongs to this output only. */
 	free(g->history[--g->nhistory]);
+	/* Which points were made up, not measured, is never dropped
+	 * silently (surf(5) says which formats keep it). */
+	if (!t->quiet && (keep = rc_format_keeps_filled(g, (enum rc_format)fmt,
+	    &err)) <= 0) {
+		if (keep < 0)
+			tool_fail(t, "%s", err.msg);
+		tool_warn(t, "%s: the %zu filled points are not marked (%s)",
+		    rc_is_stdio(path) ? "standard output" : path,
+		    rc_grid_filled_count(g), fmt == RC_FMT_SURF ||
+		    fmt == RC_FMT_TXT || fmt == RC_FMT_GSF ? "their list is "
+		    "longer than a header holds" : "only .surf, .txt and .gsf "
+		    "files keep them");
+	}
 }
 
 int

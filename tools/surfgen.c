@@ -41,7 +41,8 @@ usage(void)
 	    "  --like FILE           self-affine like FILE: a surfstat --fit table, or a\n"
 	    "                        surface (fitted as surfstat --fit does): H, lambda_r,\n"
 	    "                        lambda_s, rolloff, rms height and (unless -n, -L)\n"
-	    "                        the grid from the fit; --seed picks the realisation\n"
+	    "                        the grid from the fit, in the fit's length unit\n"
+	    "                        (-L in that unit too); --seed picks the realisation\n"
 	    "  -o FILE               output (.surf .npy .gsf .txt .x3p .nc; default\n"
 	    "                        stdout, surf)\n"
 	    "  --png FILE            PNG preview\n"
@@ -105,6 +106,7 @@ main(int argc, char **argv)
 	rc_grid *g;
 	int opt, have_n = 0, have_l = 0, spectrum_opts = 0;
 	const char *like = NULL;
+	char like_unit[32] = "";	/* the fit's length unit: the twin's */
 	double plan_seconds, seconds;
 	enum rc_fft_effort effort;
 
@@ -159,6 +161,7 @@ main(int argc, char **argv)
 		p->rolloff = f.rolloff;
 		p->rms_height = f.hrms;
 		p->rms_gradient = 0;
+		memcpy(like_unit, f.unit, sizeof(like_unit));
 		/* A cutoff below two spacings of the new grid is the grid's
 		 * own limit (the fit's q_s may be its range end, the Nyquist
 		 * wave number of the measurement). */
@@ -166,9 +169,10 @@ main(int argc, char **argv)
 			p->lambda_s = 0;
 		if (!t.quiet)
 			tool_warn(&t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
-			    "lambda_s = %.4g, rms height %.4g", like, p->hurst, p->lambda_r,
-			    p->rolloff ? " (roll-off)" : "", rc_synth_lambda_s(p),
-			    p->rms_height);
+			    "lambda_s = %.4g, rms height %.4g%s%s", like, p->hurst,
+			    p->lambda_r, p->rolloff ? " (roll-off)" : "",
+			    rc_synth_lambda_s(p), p->rms_height,
+			    like_unit[0] ? "; lengths in " : "", like_unit);
 		if (rc_synth_check(p, &err) != 0)
 			tool_fail(&t, "--like %s: the fitted model cannot be made: %s",
 			    like, err.msg);
@@ -185,6 +189,7 @@ main(int argc, char **argv)
 	if ((g = rc_synth_planned(p, effort, &plan_seconds, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);
 	seconds = rc_clock() - seconds;
+	memcpy(g->unit, like_unit, sizeof(g->unit));
 	/* Planning time is worth a line only when it was asked for. */
 	if (!t.quiet && (effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT))
 		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s; synthesis: %.3g s",

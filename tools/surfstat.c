@@ -426,6 +426,9 @@ fit_row(const struct tool *t, const rc_grid *g, rc_fft *fft,
 		tool_fail(t, "out of memory");
 	num(t, &r, "lx", g->lx);
 	num(t, &r, "ly", g->ly);
+	/* as on the scalar row; surfgen --like makes its twin in this unit */
+	if (f.unit[0] != '\0' && rc_row_str(&r, "unit", f.unit) != 0)
+		tool_fail(t, "out of memory");
 	num(t, &r, "H", f.H);
 	num(t, &r, "H_err", f.H_err);
 	num(t, &r, "q_r", f.q_r);

@@ -57,7 +57,8 @@ usage(void)
 	    "  --detrend M           subtract the least-squares mean, plane or quadratic\n"
 	    "                        over the valid points (plane, quadratic: periodic = 0)\n"
 	    "  --align-rows M        per scan line (row) remove its median, mean or plane\n"
-	    "  --fill                fill missing points harmonically (Laplace)\n"
+	    "  --fill                fill missing points harmonically (Laplace); the\n"
+	    "                        output marks them (.surf, .txt, .gsf: filled)\n"
 	    "  --crop X0:X1,Y0:Y1    keep points X0 <= i < X1, Y0 <= j < Y1\n"
 	    "  --resample D[xD]      new spacing: spectral on periodic grids, cubic\n"
 	    "                        splines on finite patches\n"
@@ -155,10 +156,10 @@ apply(const struct tool *t, rc_grid *g, const struct step *st,
 			tool_fail(t, "--align-rows: %s", err.msg);
 		return g;
 	case OPT_FILL: {
-		unsigned char *mask = NULL;
 		size_t nf;
-		if (rc_fill_harmonic(g, filled_mask ? &mask : NULL, &nf, &err) != 0)
+		if (rc_fill_harmonic(g, NULL, &nf, &err) != 0)
 			tool_fail(t, "--fill: %s", err.msg);
+		/* g->filled, which the output keeps too, as a grid of its own */
 		if (filled_mask != NULL) {
 			rc_grid *m = rc_grid_new(g->nx, g->ny, g->lx, g->ly, &err);
 			if (m == NULL)
@@ -167,11 +168,10 @@ apply(const struct tool *t, rc_grid *g, const struct step *st,
 			memcpy(m->unit, g->unit, sizeof(m->unit));
 			m->periodic = g->periodic;
 			for (size_t k = 0; k < rc_grid_size(m); k++)
-				m->z[k] = mask != NULL && mask[k];
+				m->z[k] = g->filled != NULL && g->filled[k];
 			tool_write_grid(t, m, filled_mask);
 			rc_grid_free(m);
 		}
-		free(mask);
 		if (!t->quiet && nf > 0)
 			tool_warn(t, "--fill: %zu missing points filled", nf);
 		return g;

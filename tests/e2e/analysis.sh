@@ -4,7 +4,8 @@
 # order, the periodic flag in the header, crop/transpose/resample
 # identities, 1D spectra of profiles independent of the strip width, the
 # window default, ISO parameters of a plane, fit -> surfgen --like ->
-# fit, and the usage errors of the new options.
+# fit, the filled points kept in the output, and the usage errors of the
+# new options.
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
 
@@ -48,6 +49,50 @@ check "spectral resampling up and down returns the grid" awk '
 surfwarp --fill --filled-mask fm.surf s.surf -o f.surf 2>/dev/null
 check "fill of a complete grid records 0 filled points" grep -aq '^meta.filled_points = 0$' f.surf
 check "filled mask is a mask" grep -aq '^kind = mask$' fm.surf
+
+# Filled points kept in the output.  Holes punched into a 128x96 map: a
+# 30x60 rectangle, a whole row, scattered points.
+# ranges FILE WHAT: the indices k = j nx + i of the data values of a text
+# grid that are nan (WHAT = nan) or 1 (WHAT = 1), as surf(5)'s ranges
+ranges() {
+	awk -v what="$2" 'BEGIN { k = 0 } !/^#/ { for (i = 1; i <= NF; i++) { if ($i == what) {
+		if (n && k == last + 1) { last = k } else { if (n) out = out sep(); first = k; last = k; n = 1 } }
+		k++ } }
+		function sep() { return (first == last ? first : first "-" last) "," }
+		END { if (n) out = out (first == last ? first : first "-" last); print out }' "$1"
+}
+surfgen -q -n 128x96 -L 12.8x9.6 --seed 2 -o base.txt
+awk '/^#/ { print; next } { for (i = 1; i <= NF; i++) if ((i > 10 && i <= 40 && j >= 5 && j < 65) ||
+	j == 80 || ((i - 1) * 7 + j * 13) % 101 == 0) $i = "nan"; j++; print }' base.txt > holes.txt
+listed=$(ranges holes.txt nan)
+surfwarp --fill --filled-mask holes-mask.txt -o filled.surf holes.txt 2>/dev/null
+check "the filled points are listed in the header" [ "$(grep -a '^filled = ' filled.surf)" = "filled = $listed" ]
+check "... 60 rows of the hole, the row, the dropouts: few ranges" [ "$(printf %s "$listed" | tr ',' '\n' | wc -l)" -lt 200 ]
+check "the --filled-mask file marks the same points" [ "$(ranges holes-mask.txt 1)" = "$listed" ]
+# The header's first 1000 bytes: text, the grid's description first.
+head -c 1000 filled.surf > head.txt
+check "head -c 1000: all text" [ "$(LC_ALL=C tr -d '[:print:]\n' < head.txt | wc -c)" -eq 0 ]
+check "head -c 1000: the grid first" [ "$(sed -n 3,4p head.txt | tr '\n' ' ')" = "nx = 128 ny = 96 " ]
+check_status "the toolkit reads it" 0 surfstat -q filled.surf
+# A second operation on the same grid keeps the list; one that changes
+# the grid maps it (crop, transpose) or drops it (resample).
+surfwarp -q --detrend mean -w 0.5 -o again.surf filled.surf
+check "detrend and warp keep the list" [ "$(grep -a '^filled = ' again.surf)" = "filled = $listed" ]
+surfwarp -q -o again.txt filled.surf
+check ".txt keeps it" grep -q "^# filled = $listed\$" again.txt
+surfwarp -q -o again.gsf filled.surf
+surfwarp -q -o again2.surf again.gsf
+check ".gsf keeps it" [ "$(grep -a '^filled = ' again2.surf)" = "filled = $listed" ]
+surfwarp --crop 5:45,10:90 -o crop.surf filled.surf
+surfwarp -q --crop 5:45,10:90 -o crop.txt holes.txt
+check "a crop keeps the filled points inside it" [ "$(grep -a '^filled = ' crop.surf)" = "filled = $(ranges crop.txt nan)" ]
+surfwarp --transpose -o tr.surf filled.surf
+surfwarp -q --transpose -o tr.txt holes.txt
+check "a transpose moves them with their values" [ "$(grep -a '^filled = ' tr.surf)" = "filled = $(ranges tr.txt nan)" ]
+surfwarp --resample 0.15 -o rs.surf filled.surf
+check "a resample drops the list" sh -c '! grep -aq "^filled = " rs.surf'
+surfwarp -o lost.npy filled.surf 2>lost.err
+check "a .npy output says it loses them" grep -q 'lost.npy: the .* filled points are not marked' lost.err
 
 # A profile's spectrum is 1D and does not depend on ly.
 surfgen -n 128 --seed 5 -o r.surf

@@ -6,7 +6,8 @@
 # opens through Gwyddion from a path and from a pipe, leaving no temporary
 # file; without Gwyddion the message names the package; the netCDF
 # library's ncgen writes a file in the contact.engineering convention
-# that we read, and ncdump shows ours has that convention's layout.
+# that we read, and ncdump shows ours has that convention's layout; the
+# titles of single-channel files (GSF Title, Gwyddion's '# Channel:').
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
 mkdir -p spool
@@ -154,4 +155,23 @@ if command -v ncgen >/dev/null 2>&1; then
 else
 	skip 3 "ncgen not installed: netCDF written by the netCDF library (apt-get install netcdf-bin)"
 fi
+
+# Titles of single-channel files: a GSF's Title field and the '# Channel:'
+# line of Gwyddion's text export, as --channels lists them and
+# --channel NAME picks them; a grid converted from them keeps the title.
+python3 - <<'PY'
+import struct
+b = ("Gwyddion Simple Field 1.0\nXRes = 2\nYRes = 2\nXReal = 2e-06\n"
+     "YReal = 2e-06\nXYUnits = m\nZUnits = m\nTitle = Height (fwd)\n").encode()
+b += b"\0" * (4 - len(b) % 4) + struct.pack("<4f", 1e-9, 2e-9, 3e-9, 4e-9)
+open("titled.gsf", "wb").write(b)
+PY
+printf '# Channel: Topography\n# Width: 2.000 um\n# Height: 2.000 um\n# Value units: m\n1e-9 2e-9\n3e-9 4e-9\n' > titled.txt
+check "GSF Title is the channel's title" [ "$(chan titled.gsf 1 title)" = "Height (fwd)" ]
+check "Gwyddion text export: '# Channel:' is the title" [ "$(chan titled.txt 1 title)" = Topography ]
+check_status "--channel NAME picks a GSF by its Title" 0 surfstat --channel 'height (FWD)' titled.gsf
+check_status "--channel NAME: another title is refused" 1 surfstat --channel Phase titled.txt
+surfwarp -o titled.surf titled.txt
+check "a .surf converted from the export keeps the title" [ "$(chan titled.surf 1 title)" = Topography ]
+check "a grid without a title lists '-'" [ "$(chan a.surf 1 title)" = - ]
 summary

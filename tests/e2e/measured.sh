@@ -4,7 +4,8 @@
 # any gradient (a um x nm map gives the gbar and a_r of the same map in
 # metres), non-length channels refused, the wrap-around warning, missing
 # points refused by name, arrays numpy writes in either axis order,
-# columns and the flags kept by the formats.
+# columns and the flags kept by the formats; surfstat --fit and surfgen
+# --like keep a map's unit (a um map has a um twin).
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
 
@@ -89,6 +90,48 @@ print(struct.unpack("<d", d[i:i + 8])[0], d[u:d.find(b"\0", u)].decode(),
 else
 	skip 3 "gwyddion not installed: Gwyddion client check (apt-get install gwyddion)"
 fi
+
+# --- a twin in the map's unit ----------------------------------------------------
+# A 10 um map (Rayleigh amplitudes, as a measurement's) in netCDF, which
+# carries the unit: surfstat --fit says um, surfgen --like makes its twin
+# in um, and the twin's fitted H and hrms agree with the map's within the
+# two fits' errors added in quadrature (over seeds 1-8 the largest
+# deviation was 0.45 of that: the twin has exact amplitudes and its own
+# error is small).
+surfgen -q -n 128 -L 10 -H 0.7 --lambda-r 2.5 --rolloff --rms-height 0.05 \
+    --gaussian-amplitudes --seed 4 -o twin-src.surf
+surfwarp -q --unit um -o um.nc twin-src.surf
+surfstat -q --fit -o umfit.tsv um.nc
+check "the fit table's unit is the map's (um)" [ "$(col umfit.tsv unit)" = um ]
+surfstat -q --fit --json -o umfit.json um.nc
+check "... in JSON too" grep -q '"unit": "um"' umfit.json
+surfgen -q --like umfit.tsv --seed 9 -o twin.surf
+check "the twin's header says um" grep -aq '^unit = um$' twin.surf
+check_rel "... and lx = 10 (um)" "$(surfstat -q twin.surf | col /dev/stdin lx)" 10 0
+surfstat -q --fit -o twinfit.tsv twin.surf
+# agree DESC COLUMN: twin and map within their combined error
+agree() {
+	check_range "$1" "$(col twinfit.tsv "$2")" \
+	    "$(awk -v a="$(col umfit.tsv "$2")" -v e="$(col umfit.tsv "$2"_err)" -v f="$(col twinfit.tsv "$2"_err)" 'BEGIN { printf "%.17g", a - sqrt(e * e + f * f) }')" \
+	    "$(awk -v a="$(col umfit.tsv "$2")" -v e="$(col umfit.tsv "$2"_err)" -v f="$(col twinfit.tsv "$2"_err)" 'BEGIN { printf "%.17g", a + sqrt(e * e + f * f) }')"
+}
+agree "the twin's H is the map's within the fits' errors" H
+agree "the twin's hrms (um) is the map's within the fits' errors" hrms
+surfgen -q --like um.nc --seed 9 -o twin2.surf
+check "--like the map itself: the twin is in um too" grep -aq '^unit = um$' twin2.surf
+# A map in metres (x3p stores metres): a twin in metres.
+surfwarp -q -o m.x3p um.nc
+surfgen -q --like m.x3p --seed 9 -o twin-m.surf
+check "--like an x3p map: the twin is in m" grep -aq '^unit = m$' twin-m.surf
+check_rel "... lx = 1e-5 (m)" "$(surfstat -q twin-m.surf | col /dev/stdin lx)" 1e-5 1e-15
+sed '2s/	um	/	V	/' umfit.tsv >badunit.tsv
+check_status "a fit table whose unit is not a length: exit 1" 1 surfgen -q --like badunit.tsv
+check "... naming the unit" grep -q "unit 'V' is not a length unit" "$T_TMP/stderr"
+# A unitless fit (surfgen's own surfaces) makes a unitless twin.
+surfstat -q --fit -o nofit.tsv twin-src.surf
+check "a unitless map's fit has no unit column" [ "$(col nofit.tsv unit)" = missing-column-unit ]
+surfgen -q --like nofit.tsv --seed 9 -o twin-none.surf
+check "... and its twin no unit" sh -c '! grep -aq "^unit = " twin-none.surf'
 
 # --- periodicity --------------------------------------------------------------
 surfgen -q -n 64 --seed 9 -o rough.surf
