@@ -40,6 +40,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
 	    rc_row_str(row, "method", in->method) ||
 	    rc_row_str(row, "boundary", in->boundary) ||
+	    rc_row_str(row, "kernel", in->kernel ? in->kernel : "continuum") ||
 	    rc_row_int(row, "nx", (long long)in->nx) ||
 	    rc_row_int(row, "ny", (long long)in->ny) ||
 	    rc_row_num(row, "lx", in->indenter->lx) ||

@@ -18,6 +18,7 @@ struct gfmd_row {
 	double seconds, plan_seconds;
 	const char *method;
 	const char *boundary;		/* "periodic" or "free" */
+	const char *kernel;		/* "continuum" or "pixel"; NULL: continuum */
 	double approach;		/* rc_solver_approach */
 	double hardness;		/* the cap on sigma; 0: none */
 	double a_plastic;		/* rc_solver_plastic_fraction */
