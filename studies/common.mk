@@ -10,7 +10,8 @@
 #       pk4    Peklenik    seed3  random seed   hx2      harmonic exponent
 #       w2     warp (Eq. 4), rescaled to rms gradient 1  flip  h -> -h
 #   $(OUT)/sol/NAME__p0.05.tsv     gfmd-solve row of surface NAME at p* 0.05;
-#       further "__" words: mfire|mcg (method), tol1e-6 (tolerance)
+#       further "__" words: mfire|mcg (method), tol1e-6 (tolerance),
+#       kpixel (gfmd-solve --kernel pixel)
 #   $(OUT)/stat/NAME.tsv           surfstat scalars of surface NAME
 # A study lists the files its figure needs and reduces them with
 # contact-stats, awk and gnuplot.  Tools are not prerequisites (other
@@ -69,7 +70,8 @@ surf_of = $(firstword $(subst __, ,$(1)))
 solve_words = $(wordlist 2,99,$(subst __, ,$(1)))
 solveopts = -p $(patsubst p%,%,$(filter p%,$(call solve_words,$(1)))) \
 	$(patsubst m%,--method %,$(filter m%,$(call solve_words,$(1)))) \
-	$(patsubst tol%,--tol %,$(filter tol%,$(call solve_words,$(1))))
+	$(patsubst tol%,--tol %,$(filter tol%,$(call solve_words,$(1)))) \
+	$(patsubst k%,--kernel %,$(filter k%,$(call solve_words,$(1))))
 
 $(OUT)/sol/%.tsv: $(OUT)/surf/$$(call surf_of,$$*).surf
 	@mkdir -p $(@D)

@@ -566,6 +566,11 @@ main(int argc, char **argv)
 		{
 			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
 			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
+			    .a_subpixel = o.so.boundary == RC_BOUNDARY_FREE ? NAN :
+			    rc_contact_subpixel(rc_solver_displacement(solver),
+			    h->z, rc_solver_pressure(solver),
+			    rc_solver_contact(solver), h->nx, h->ny, h->lx, h->ly,
+			    o.so.modulus),
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .tol = o.so.tol,

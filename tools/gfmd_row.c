@@ -24,6 +24,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||
 	    rc_row_num(row, "a_yastrebov", st->a_yastrebov) ||
+	    rc_row_num(row, "a_subpixel", in->a_subpixel) ||
 	    rc_row_num(row, "gbar", in->gbar) ||
 	    rc_row_num(row, "gbar_c", st->gbar_c) ||
 	    rc_row_num(row, "gbar_c_prime", st->gbar_c_prime) ||

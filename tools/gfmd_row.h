@@ -12,6 +12,7 @@
 struct gfmd_row {
 	double p_star, p, gbar;
 	const rc_contact_stats *stats;
+	double a_subpixel;		/* rc_contact_subpixel; NaN: none */
 	double mean_gap, elastic_energy;
 	long iterations;
 	double residual, tol;		/* reached, and asked for */

@@ -5,7 +5,7 @@
 # contact carries p + k_q A cos with the pixel kernel's k_q (1/G_q of
 # lib/elastic.h, summed here by awk over 201^2 images, independent of the
 # library's truncation) with both methods; free boundaries write pixel;
-# the refusals; contact-stats groups by kernel.
+# the refusals; a_subpixel; contact-stats groups by kernel.
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
@@ -61,6 +61,15 @@ check "--kernel continuum --boundary free: says Love's pixel compliance" grep -q
 check_status "--kernel continuum on a non-periodic map" 1 gfmd-solve -q --kernel continuum -p 0.1 "$T/np.surf"
 check_status "--kernel pixel with --thickness" 2 gfmd-solve --kernel pixel --thickness 0.1 --poisson 0.3 -p 0.1 "$T/r.surf"
 check_status "--kernel pixel with --checkpoint" 2 gfmd-solve --kernel pixel --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
+
+# a_subpixel (lib/contact.h): below the raw count, which overshoots, and
+# above Yastrebov's weight 1/2 on every contact-line point; nan when free.
+for f in d p; do
+	check "a_subpixel ($f): within [(n_c - n_cl/2)/n_tot, a_r)" awk -F'\t' '
+	    NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+	    { exit !($c["a_subpixel"] < $c["a_r"] && $c["a_subpixel"] > ($c["n_c"] - $c["n_cl"] / 2) / $c["n_tot"]) }' "$T/$f.tsv"
+done
+check "free boundaries: a_subpixel nan" test "$(col "$T/f.tsv" a_subpixel)" = nan
 
 contact-stats -q --no-extrapolate -o "$T/cs.tsv" "$T/d.tsv" "$T/p.tsv"
 check_rel "contact-stats: one group per kernel" "$(awk 'END { print NR - 1 }' "$T/cs.tsv")" 2 0

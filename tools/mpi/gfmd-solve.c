@@ -217,7 +217,7 @@ main(int argc, char **argv)
 		mean_gap = rc_solver_mean_gap(solver);
 		{
 			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
-			    .stats = &st, .mean_gap = mean_gap,
+			    .stats = &st, .mean_gap = mean_gap, .a_subpixel = NAN,
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .tol = o.so.tol,
