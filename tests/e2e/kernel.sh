@@ -9,13 +9,6 @@
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
-# The amplitude of a pressure field: max - mean.
-amplitude() {
-	off=$(head -c 65536 "$1" | grep -a '^data_offset = ' | sed 's/^data_offset = //')
-	od -A n -t f8 -v -j "$off" "$1" | tr -s ' ' '\n' | sed '/^$/d' |
-	    awk 'NR == 1 || $1 > m { m = $1 } { s += $1 } END { printf "%.17g\n", m - s / NR }'
-}
-
 surfgen -q -n 64 -H 0.8 --lambda-r 0.5 --lambda-s 0.125 --seed 3 -o "$T/r.surf"
 gfmd-solve -q -j 1 -p 0.05 "$T/r.surf" > "$T/d.tsv"
 gfmd-solve -q -j 1 -p 0.05 --kernel continuum "$T/r.surf" > "$T/c.tsv"
