@@ -42,6 +42,88 @@ rc_contact_count(const unsigned char *contact, size_t n)
 
 /* On an axis of length 1 the periodic neighbour is the point itself, which
  * is in contact, so line grids need no special case. */
+/* (1 - f)^(3/2) / f^(1/2) = r for f in (0, 1): decreasing from +inf to 0;
+ * bisection to 2^-50. */
+static double
+edge_fraction(double r)
+{
+	double lo = 0, hi = 1;
+
+	for (int k = 0; k < 50; k++) {
+		double m = 0.5 * (lo + hi);
+
+		if (pow(1 - m, 1.5) > r * sqrt(m))
+			lo = m;
+		else
+			hi = m;
+	}
+	return 0.5 * (lo + hi);
+}
+
+#define SUBPIXEL_C_MIN 0.1
+
+double
+rc_contact_subpixel(const double *u, const double *h, const double *sigma,
+    const unsigned char *contact, size_t nx, size_t ny, double lx, double ly,
+    double modulus)
+{
+	size_t i, j, n = nx * ny, n_c = 0;
+	double dx = lx / (double)nx, dy = ly / (double)ny;
+	double sum_x = 0, sum_y = 0, bonds_x = 0, bonds_y = 0;
+
+#define GAP(ii, jj) (u[(jj) * nx + (ii)] - h[(jj) * nx + (ii)])
+#pragma omp parallel for private(i) reduction(+:sum_x, sum_y, bonds_x, bonds_y, n_c) schedule(static)
+	for (j = 0; j < ny; j++)
+		for (i = 0; i < nx; i++) {
+			size_t k = j * nx + i;
+
+			if (!contact[k])
+				continue;
+			n_c++;
+			if (!(sigma[k] > 0))
+				continue;
+			for (int b = 0; b < 4; b++) {
+				int along_x = b < 2;
+				size_t ii = i, jj = j, n_axis = along_x ? nx : ny;
+				double g, gx, gy, c, d = along_x ? dx : dy;
+
+				if (n_axis < 2)
+					continue;
+				if (along_x)
+					ii = b == 0 ? (i + 1) % nx : (i + nx - 1) % nx;
+				else
+					jj = b == 2 ? (j + 1) % ny : (j + ny - 1) % ny;
+				if (contact[jj * nx + ii] || !((g = GAP(ii, jj)) > 0))
+					continue;
+				gx = nx > 1 ? (GAP((ii + 1) % nx, jj) -
+				    GAP((ii + nx - 1) % nx, jj)) / dx : 0;
+				gy = ny > 1 ? (GAP(ii, (jj + 1) % ny) -
+				    GAP(ii, (jj + ny - 1) % ny)) / dy : 0;
+				c = hypot(gx, gy) > 0 ? fabs(along_x ? gx : gy) /
+				    hypot(gx, gy) : 1;
+				if (c < SUBPIXEL_C_MIN)
+					c = SUBPIXEL_C_MIN;
+				g = edge_fraction(3 * modulus * g /
+				    (4 * sigma[k] * d * c)) - 0.5;
+				if (along_x) {
+					sum_x += g;
+					bonds_x++;
+				} else {
+					sum_y += g;
+					bonds_y++;
+				}
+			}
+		}
+#undef GAP
+	if (n == 0)
+		return NAN;
+	if (bonds_x + bonds_y == 0)
+		return (double)n_c / (double)n;
+	/* Each axis's sum is the whole correction; weighted by its bonds. */
+	return ((double)n_c + (bonds_x * sum_x + bonds_y * sum_y) /
+	    (bonds_x + bonds_y)) / (double)n;
+}
+
 size_t
 rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
 {

@@ -91,6 +91,37 @@ double rc_contact_gbar_fd(const rc_grid *h);
 /* The same without wrap-around (a finite patch; above). */
 double rc_contact_gbar_open(const rc_grid *h);
 
+/* Sub-pixel contact area from a solution (periodic grids), a fraction
+ * of the cell.  The raw count n_c puts the contact line on the midpoint
+ * of every bond between a contact point i and a non-contact neighbour j.
+ * Near a straight contact edge the pressure inside and the gap outside
+ * follow the edge asymptotics of a half space (locally plane strain; the
+ * 2D Hertz solution expanded at its edge):
+ *   sigma(s) = C s^(1/2),   g(t) = (4 C / (3 E*)) t^(3/2),
+ * s and t the normal distances into and out of the contact.  A bond of
+ * spacing d (dx or dy) crossing the edge at distance x from i along the
+ * bond has s = c x, t = c (d - x), c = |n . e| the cosine between the
+ * edge normal and the bond, so
+ *   3 E* g_j / (4 sigma_i d c) = (1 - f)^(3/2) / f^(1/2),  f = x / d,
+ * monotonic in f in (0, 1), solved by bisection.  The normal is that of
+ * the gap's gradient at j (central differences, wrap-around); c is
+ * floored at 0.1 (a bond along the edge carries no information on where
+ * it crosses).  The edge then lies (f - 1/2) d beyond the bond's
+ * midpoint; summed over the bonds of one axis, S_x = sum (f - 1/2),
+ * this is the area (in pixels) that the rows miss, exact for a straight
+ * edge that crosses them (the length in contact is linear across a row,
+ * so the row centre's is its mean), and the same for the columns, S_y.
+ * The two are weighted by their bond counts b_x, b_y (an edge along y
+ * crosses no column, and the columns' estimate is then the raw one):
+ *   a_subpixel = (n_c + (b_x S_x + b_y S_y) / (b_x + b_y)) / n_tot.
+ * Bonds with sigma_i = 0 or g_j = 0 are
+ * skipped.  Chosen among seven variants (how the normal is estimated,
+ * its floor) on two seeds at eps_c = 1/4 and 1/8 (bench/accuracy,
+ * README.md: its measured error).  u, h, sigma: nx*ny values. */
+double rc_contact_subpixel(const double *u, const double *h,
+    const double *sigma, const unsigned char *contact, size_t nx, size_t ny,
+    double lx, double ly, double modulus);
+
 /* The pieces, for callers that need only one. */
 size_t rc_contact_count(const unsigned char *contact, size_t n);
 size_t rc_contact_line(const unsigned char *contact, size_t nx, size_t ny);

@@ -17,7 +17,8 @@
  * discretisation; everything else (lx, ly, method and the surface's
  * metadata) identifies the problem. */
 static const char *const output_cols[] = {
-	"p_star", "p", "a_r", "a_plastic", "n_c", "n_cl", "n_tot", "a_yastrebov", "gbar",
+	"p_star", "p", "a_r", "a_plastic", "n_c", "n_cl", "n_tot", "a_yastrebov",
+	"a_subpixel", "gbar",
 	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap", "approach",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
 	"residual", "tol", "seconds", "plan_seconds", "nx", "ny", NULL

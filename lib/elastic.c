@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* elastic.c - k_q table and the FFT applications of K and G = 1/K. */
+/* elastic.c - k_q table (continuum or pixel kernel) and the FFT
+ * applications of K and G = 1/K. */
 #include "elastic.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #ifdef RC_MPI
@@ -136,6 +138,10 @@ rc_elastic_set_layer(rc_elastic *e, double lx, double ly, double thickness,
 
 	if (rc_layer_check(thickness, substrate, poisson, err) < 0)
 		return -1;
+	if (e->kernel != RC_KERNEL_CONTINUUM)
+		return rc_seterr(err, "a finite thickness has the continuum "
+		    "kernel only (the pixel kernel would need the layer's "
+		    "factor on every image)");
 	if (e->n == 1)
 		return 0;	/* no mode but the uniform one: scales kept */
 	e->k_min = HUGE_VAL;
@@ -157,6 +163,131 @@ rc_elastic_set_layer(rc_elastic *e, double lx, double ly, double thickness,
 		}
 	}
 	return 0;
+#endif
+}
+
+const char *
+rc_kernel_name(enum rc_kernel k)
+{
+	return k == RC_KERNEL_PIXEL ? "pixel" : "continuum";
+}
+
+int
+rc_kernel_parse(const char *name)
+{
+	if (strcmp(name, "continuum") == 0)
+		return RC_KERNEL_CONTINUUM;
+	if (strcmp(name, "pixel") == 0)
+		return RC_KERNEL_PIXEL;
+	return -1;
+}
+
+/* Images per axis of the pixel kernel (elastic.h: truncation, error). */
+#define PIXEL_M 8
+
+/* One axis of the image sum: sinc(c + pi m) and (Q_m)^2 = (2 (c + pi m) /
+ * d)^2 for m = -PIXEL_M ... PIXEL_M.  sin(c + pi m) = (-1)^m sin c, so
+ * the form factor is exactly 0 on every image of q = 0. */
+static void
+pixel_axis(double q, double d, double *form, double *q2)
+{
+	double c = 0.5 * q * d, sc = sin(c);
+
+	for (int m = -PIXEL_M; m <= PIXEL_M; m++) {
+		double x = c + M_PI * m, qm = 2 * x / d;
+
+		form[m + PIXEL_M] = x == 0 ? 1 : (m % 2 ? -sc : sc) / x;
+		q2[m + PIXEL_M] = qm * qm;
+	}
+}
+
+double
+rc_pixel_compliance(double qx, double qy, double dx, double dy)
+{
+	double fx[2 * PIXEL_M + 1], fy[2 * PIXEL_M + 1];
+	double qx2[2 * PIXEL_M + 1], qy2[2 * PIXEL_M + 1];
+	double s8 = 0, s4 = 0;
+
+	if (qx == 0 && qy == 0)
+		return 0;
+	pixel_axis(qx, dx, fx, qx2);
+	pixel_axis(qy, dy, fy, qy2);
+	for (int my = -PIXEL_M; my <= PIXEL_M; my++) {
+		double wy8 = abs(my) == PIXEL_M ? 0.5 : 1;
+		double wy4 = abs(my) == PIXEL_M / 2 ? 0.5 : 1;
+		double row8 = 0, row4 = 0;
+
+		if (fy[my + PIXEL_M] == 0)
+			continue;
+		for (int mx = -PIXEL_M; mx <= PIXEL_M; mx++) {
+			double t;
+
+			if (fx[mx + PIXEL_M] == 0)
+				continue;
+			t = fx[mx + PIXEL_M] / sqrt(qx2[mx + PIXEL_M] + qy2[my + PIXEL_M]);
+			row8 += (abs(mx) == PIXEL_M ? 0.5 : 1) * t;
+			if (abs(mx) <= PIXEL_M / 2)
+				row4 += (abs(mx) == PIXEL_M / 2 ? 0.5 : 1) * t;
+		}
+		s8 += wy8 * fy[my + PIXEL_M] * row8;
+		if (abs(my) <= PIXEL_M / 2)
+			s4 += wy4 * fy[my + PIXEL_M] * row4;
+	}
+	/* 2 / |Q| per image; Richardson on the M^-4 error of the halved sums. */
+	return 2 * (16 * s8 - s4) / 15;
+}
+
+int
+rc_elastic_set_kernel(rc_elastic *e, double lx, double ly,
+    enum rc_kernel kernel, rc_err *err)
+{
+	if (kernel == RC_KERNEL_CONTINUUM)
+		return 0;
+	if (kernel != RC_KERNEL_PIXEL)
+		return rc_seterr(err, "unknown elastic kernel %d", (int)kernel);
+#ifdef RC_MPI
+	(void)e;
+	(void)lx;
+	(void)ly;
+	return rc_seterr(err, "the pixel kernel is not in the MPI build");
+#else
+	{
+		size_t i, j, nxc = e->nxc, ny = e->ny;
+		double dx = lx / (double)e->nx, dy = ly / (double)ny;
+		double kmin = HUGE_VAL, kmax = 0;
+
+		e->kernel = kernel;
+		if (e->n == 1)
+			return 0;	/* no mode but the uniform one: scales kept */
+		/* Even in qy: rows j and ny - j are the same; compute the first
+		 * half and copy. */
+#pragma omp parallel for private(i) schedule(dynamic, 4)
+		for (j = 0; j <= ny / 2; j++) {
+			double qy = rc_wavenumber(j, ny, ly);
+
+			for (i = 0; i < nxc; i++) {
+				double g = rc_pixel_compliance(rc_wavenumber(i,
+				    e->nx, lx), qy, dx, dy);
+
+				e->stiffness[j * nxc + i] = g > 0 ?
+				    e->modulus / g : 0;
+			}
+		}
+		for (j = ny / 2 + 1; j < ny; j++)
+			memcpy(e->stiffness + j * nxc, e->stiffness +
+			    (ny - j) * nxc, nxc * sizeof(double));
+		for (i = 0; i < nxc * ny; i++) {
+			double k = e->stiffness[i];
+
+			if (k > kmax)
+				kmax = k;
+			if (k > 0 && k < kmin)
+				kmin = k;
+		}
+		e->k_min = kmin;
+		e->k_max = kmax;
+		return 0;
+	}
 #endif
 }
 

@@ -129,6 +129,17 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	}
 	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) < 0)
 		return NULL;
+	if (o->kernel != RC_KERNEL_CONTINUUM && o->kernel != RC_KERNEL_PIXEL) {
+		rc_seterr(err, "unknown elastic kernel %d", (int)o->kernel);
+		return NULL;
+	}
+	if (o->kernel == RC_KERNEL_PIXEL && o->boundary == RC_BOUNDARY_PERIODIC &&
+	    rc_layer_check(o->thickness, o->substrate, o->poisson, NULL) > 0) {
+		rc_seterr(err, "a finite thickness has the continuum kernel only: "
+		    "the pixel kernel would need the layer's factor on every "
+		    "image of its sum (elastic.h)");
+		return NULL;
+	}
 	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) > 0 &&
 	    o->boundary == RC_BOUNDARY_FREE) {
 		rc_seterr(err, "a finite thickness needs periodic boundaries: "
@@ -163,6 +174,12 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
 	    (enum rc_fft_effort)o->measure, err) != 0)) {
 		rc_halfspace_release(&s->fel);
+		free(s);
+		return NULL;
+	}
+	if (!s->free_bc && rc_elastic_set_kernel(&s->el, s->lx, s->ly,
+	    o->kernel, err) != 0) {
+		rc_elastic_free(&s->el);
 		free(s);
 		return NULL;
 	}

@@ -8,7 +8,8 @@
  * The elastic surface height u(r) obeys u >= h; gap g = u - h; the contact
  * pressure sigma(r) >= 0 acts only where g = 0, and its mean equals the
  * applied pressure.  Each Fourier mode of u has stiffness q E* / 2 per unit
- * area (Wang & Mueser 2020, section 2; gfmd-solve(1)).  Two independent
+ * area (Wang & Mueser 2020, section 2; gfmd-solve(1); or the pixel kernel
+ * of elastic.h, opts.kernel).  Two independent
  * methods share this interface: FIRE-GFMD (Zhou, Moseler & Mueser 2019)
  * and Polonsky & Keer's constrained conjugate gradient (1999).
  *
@@ -18,6 +19,7 @@
 #ifndef RC_SOLVER_H
 #define RC_SOLVER_H
 
+#include "elastic.h"
 #include "grid.h"
 #include "layer.h"
 
@@ -37,6 +39,12 @@ typedef struct rc_solver_opts {
 	 * there (fire_free.c). */
 	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
+	/* The periodic elastic kernel (elastic.h): the continuum q E* / 2
+	 * (default) or the lattice-consistent pixel one; FIRE's masses and
+	 * CG's compliance both follow it.  Free boundaries always solve with
+	 * Love's pixel compliance (elastic_free.h), the discretisation of
+	 * RC_KERNEL_PIXEL, and ignore it.  The pixel kernel has no layer. */
+	enum rc_kernel kernel;
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
 	 * 0 or +inf: no cap (the default).  CG only (pkcg_plastic.c,
 	 * gfmd-solve(1) PLASTICITY). */

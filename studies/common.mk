@@ -12,7 +12,8 @@
 #   $(OUT)/sol/NAME__p0.05.tsv     gfmd-solve row of surface NAME at p* 0.05;
 #       further "__" words: mfire|mcg (method), tol1e-6 (tolerance),
 #       hard0.5 (--hardness, implies mcg), th0.125 (an elastic layer of
-#       that --thickness), nu0.3 (its --poisson), slip (its --substrate)
+#       that --thickness), nu0.3 (its --poisson), slip (its --substrate),
+#       kpixel (gfmd-solve --kernel pixel)
 #   $(OUT)/stat/NAME.tsv           surfstat scalars of surface NAME
 # A study lists the files its figure needs and reduces them with
 # contact-stats, awk and gnuplot.  Tools are not prerequisites (other
@@ -75,7 +76,8 @@ solveopts = -p $(patsubst p%,%,$(filter p%,$(call solve_words,$(1)))) \
 	$(patsubst hard%,--method cg --hardness %,$(filter hard%,$(call solve_words,$(1)))) \
 	$(patsubst th%,--thickness %,$(filter th%,$(call solve_words,$(1)))) \
 	$(patsubst nu%,--poisson %,$(filter nu%,$(call solve_words,$(1)))) \
-	$(if $(filter slip,$(call solve_words,$(1))),--substrate slip)
+	$(if $(filter slip,$(call solve_words,$(1))),--substrate slip) \
+	$(patsubst k%,--kernel %,$(filter k%,$(call solve_words,$(1))))
 
 $(OUT)/sol/%.tsv: $(OUT)/surf/$$(call surf_of,$$*).surf
 	@mkdir -p $(@D)

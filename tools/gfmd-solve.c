@@ -153,6 +153,7 @@ usage(void)
 	printf(
 "usage: gfmd-solve (-p P[,P...] | --pressure-abs P[,P...] | --approach D[,D...])\n"
 "           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--hardness H]\n"
+"           [--kernel continuum|pixel]\n"
 "           [--thickness D --poisson NU [--substrate bonded|slip]]\n"
 "           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
@@ -171,6 +172,9 @@ usage(void)
 "                       isolated patch of half space (default: the grid's\n"
 "                       periodic flag)\n"
 "  -E MODULUS           contact modulus E* (default 1)\n"
+"  --kernel continuum|pixel  periodic elastic kernel: q E*/2 (default) or\n"
+"                       the response to pressure uniform on each pixel\n"
+"                       (free boundaries: always pixel)\n"
 "  --method fire|cg     FIRE-GFMD (default) or Polonsky-Keer CG\n"
 "  --hardness H         perfect plasticity: cap the contact pressure at H\n"
 "                       (units of E*; needs --method cg; default no cap)\n"
@@ -354,6 +358,11 @@ main(int argc, char **argv)
 	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
 	if (o.so.boundary == RC_BOUNDARY_PERIODIC)
 		tool_check_wrap(&t, h, input);
+	else if (o.given_kernel && o.so.kernel != RC_KERNEL_PIXEL)
+		tool_fail(&t, "--kernel %s: %s is solved with free boundaries "
+		    "(not marked periodic), which always use Love's pixel "
+		    "compliance; drop --kernel or add --boundary periodic",
+		    rc_kernel_name(o.so.kernel), input ? input : "standard input");
 	/* The analysis plan lives as long as the solver; --fd and free
 	 * boundaries need none. */
 	memset(&fft, 0, sizeof(fft));
@@ -557,12 +566,19 @@ main(int argc, char **argv)
 		{
 			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
 			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
+			    .a_subpixel = o.so.boundary == RC_BOUNDARY_FREE ? NAN :
+			    rc_contact_subpixel(rc_solver_displacement(solver),
+			    h->z, rc_solver_pressure(solver),
+			    rc_solver_contact(solver), h->nx, h->ny, h->lx, h->ly,
+			    o.so.modulus),
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .tol = o.so.tol,
 			    .seconds = res.seconds, .plan_seconds = plan_seconds,
 			    .method = rc_method_name(o.so.method),
 			    .boundary = rc_boundary_name(o.so.boundary),
+			    .kernel = rc_kernel_name(o.so.boundary ==
+			    RC_BOUNDARY_FREE ? RC_KERNEL_PIXEL : o.so.kernel),
 			    .approach = rc_solver_approach(solver), .indenter = h,
 			    .hardness = rc_solver_opts_plastic(&o.so) ?
 			    o.so.hardness : 0,

@@ -108,6 +108,16 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->poisson_given = 1;
 		o->given_layer = 1;
 		break;
+	case OPT_KERNEL: {
+		int k = rc_kernel_parse(arg);
+
+		if (k < 0)
+			tool_bad(t, "--kernel %s: want continuum or pixel", arg);
+		else
+			o->so.kernel = (enum rc_kernel)k;
+		o->given_kernel = 1;
+		break;
+	}
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
 			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
@@ -218,6 +228,22 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 		if (o->ck_path != NULL || o->resume_path != NULL)
 			tool_bad(t, "--thickness: checkpoints do not record the "
 			    "layer; run without --checkpoint and --resume");
+	}
+	if (o->given_kernel) {
+		if (o->boundary == RC_BOUNDARY_FREE &&
+		    o->so.kernel != RC_KERNEL_PIXEL)
+			tool_bad(t, "--kernel %s: free boundaries always solve "
+			    "with Love's pixel compliance (the discretisation of "
+			    "--kernel pixel); drop --kernel",
+			    rc_kernel_name(o->so.kernel));
+		if (o->so.kernel == RC_KERNEL_PIXEL && o->given_layer)
+			tool_bad(t, "--kernel pixel: a layer (--thickness) has the "
+			    "continuum kernel only (the pixel kernel would need "
+			    "the layer's factor on every image of its sum)");
+		if (o->so.kernel == RC_KERNEL_PIXEL &&
+		    (o->ck_path != NULL || o->resume_path != NULL))
+			tool_bad(t, "--kernel pixel: checkpoints do not record the "
+			    "kernel; run without --checkpoint and --resume");
 	}
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");

@@ -30,7 +30,8 @@ enum {
 	OPT_HARDNESS,
 	OPT_THICKNESS,
 	OPT_SUBSTRATE,
-	OPT_POISSON
+	OPT_POISSON,
+	OPT_KERNEL
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -58,6 +59,7 @@ enum {
 	{ "thickness", required_argument, NULL, OPT_THICKNESS }, \
 	{ "substrate", required_argument, NULL, OPT_SUBSTRATE }, \
 	{ "poisson", required_argument, NULL, OPT_POISSON }, \
+	{ "kernel", required_argument, NULL, OPT_KERNEL }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -86,6 +88,7 @@ struct gfmd_opts {
 	int given_layer;		/* --thickness, --substrate or --poisson */
 	int poisson_given;
 	int given_max_iter;
+	int given_kernel;
 };
 
 void gfmd_opts_init(struct gfmd_opts *o);

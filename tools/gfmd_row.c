@@ -24,6 +24,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||
 	    rc_row_num(row, "a_yastrebov", st->a_yastrebov) ||
+	    rc_row_num(row, "a_subpixel", in->a_subpixel) ||
 	    rc_row_num(row, "gbar", in->gbar) ||
 	    rc_row_num(row, "gbar_c", st->gbar_c) ||
 	    rc_row_num(row, "gbar_c_prime", st->gbar_c_prime) ||
@@ -40,6 +41,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_num(row, "plan_seconds", in->plan_seconds) ||
 	    rc_row_str(row, "method", in->method) ||
 	    rc_row_str(row, "boundary", in->boundary) ||
+	    rc_row_str(row, "kernel", in->kernel ? in->kernel : "continuum") ||
 	    rc_row_int(row, "nx", (long long)in->nx) ||
 	    rc_row_int(row, "ny", (long long)in->ny) ||
 	    rc_row_num(row, "lx", in->indenter->lx) ||

@@ -12,12 +12,14 @@
 struct gfmd_row {
 	double p_star, p, gbar;
 	const rc_contact_stats *stats;
+	double a_subpixel;		/* rc_contact_subpixel; NaN: none */
 	double mean_gap, elastic_energy;
 	long iterations;
 	double residual, tol;		/* reached, and asked for */
 	double seconds, plan_seconds;
 	const char *method;
 	const char *boundary;		/* "periodic" or "free" */
+	const char *kernel;		/* "continuum" or "pixel"; NULL: continuum */
 	double approach;		/* rc_solver_approach */
 	double hardness;		/* the cap on sigma; 0: none */
 	double a_plastic;		/* rc_solver_plastic_fraction */

@@ -60,6 +60,7 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 		free(s);
 		return NULL;
 	}
+	s->k_uniform = HUGE_VAL;	/* a half space: no uniform compression */
 	/* One spare point: a rank may own no rows. */
 	s->height = fftw_alloc_real(n + 1);
 	s->sigma = fftw_alloc_real(n + 1);

@@ -8,13 +8,6 @@
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
-# The amplitude of a pressure field: max - mean.
-amplitude() {
-	off=$(head -c 65536 "$1" | grep -a '^data_offset = ' | sed 's/^data_offset = //')
-	od -A n -t f8 -v -j "$off" "$1" | tr -s ' ' '\n' | sed '/^$/d' |
-	    awk 'NR == 1 || $1 > m { m = $1 } { s += $1 } END { printf "%.17g\n", m - s / NR }'
-}
-
 # k_q A of a sine of wavelength 1 and amplitude A on a layer of
 # thickness d, Poisson 0.3, E* = 1: phi from the closed form.
 kqa() {

@@ -50,6 +50,13 @@ col() {
 		NR == r + 1 { if (c) print $c; else print "missing-column-" n; exit }' "$1"
 }
 
+# amplitude FILE.surf: max - mean of a field (a pressure's amplitude)
+amplitude() {
+	off=$(head -c 65536 "$1" | grep -a '^data_offset = ' | sed 's/^data_offset = //')
+	od -A n -t f8 -v -j "$off" "$1" | tr -s ' ' '\n' | sed '/^$/d' |
+	    awk 'NR == 1 || $1 > m { m = $1 } { s += $1 } END { printf "%.17g\n", m - s / NR }'
+}
+
 # The last line of every test program: "N passed, N failed", followed by
 # ", N skipped" when some checks could not run here.
 summary() {

@@ -115,6 +115,10 @@ main(int argc, char **argv)
 	if (o.given_layer)
 		tool_bad(&t, "--thickness: not in the MPI build (an elastic "
 		    "layer is solved by the serial gfmd-solve)");
+	if (o.so.kernel != RC_KERNEL_CONTINUUM)
+		tool_bad(&t, "--kernel %s: not in the MPI build (the pixel "
+		    "kernel is solved by the serial gfmd-solve)",
+		    rc_kernel_name(o.so.kernel));
 	if (o.given_hardness)
 		tool_bad(&t, "--hardness: not in the MPI build (perfect "
 		    "plasticity needs the serial gfmd-solve with --method cg)");
@@ -213,7 +217,7 @@ main(int argc, char **argv)
 		mean_gap = rc_solver_mean_gap(solver);
 		{
 			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
-			    .stats = &st, .mean_gap = mean_gap,
+			    .stats = &st, .mean_gap = mean_gap, .a_subpixel = NAN,
 			    .elastic_energy = rc_solver_elastic_energy(solver),
 			    .iterations = res.iterations, .residual = res.residual,
 			    .tol = o.so.tol,
