@@ -219,10 +219,12 @@ usage(void)
 "  --version            the version\n");
 }
 
-/* Make a field grid shaped and labelled like the indenter. */
+/* Make a field grid shaped and labelled like the indenter, periodic as
+ * the solve was: free boundaries make an isolated patch of any grid. */
 static rc_grid *
 field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
-    double p, double p_star, double modulus, const char *method)
+    double p, double p_star, double modulus, const char *method,
+    enum rc_boundary boundary)
 {
 	rc_err err;
 	rc_grid *g = rc_grid_clone(h, 0, &err);
@@ -230,6 +232,7 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 	if (g == NULL)
 		tool_fail(t, "%s", err.msg);
 	g->kind = kind;
+	g->periodic = boundary == RC_BOUNDARY_PERIODIC;
 	/* Pressures (units of E*) and the mask are no lengths. */
 	if (!rc_kind_is_length(kind))
 		g->z_unit[0] = '\0';
@@ -666,14 +669,14 @@ main(int argc, char **argv)
 
 		if (o.field[GFMD_DISPLACEMENT] != NULL) {
 			g = field_grid(&t, h, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-			    o.modulus, method_name);
+			    o.modulus, method_name, o.so.boundary);
 			memcpy(g->z, u, np * sizeof(double));
 			tool_write_grid(&t, g, o.field[GFMD_DISPLACEMENT]);
 			rc_grid_free(g);
 		}
 		if (o.field[GFMD_GAP] != NULL) {
 			g = field_grid(&t, h, RC_KIND_GAP, last_p, last_p_star, o.modulus,
-			    method_name);
+			    method_name, o.so.boundary);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = u[k] - h->z[k];
 			tool_write_grid(&t, g, o.field[GFMD_GAP]);
@@ -681,14 +684,14 @@ main(int argc, char **argv)
 		}
 		if (o.field[GFMD_PRESSURE] != NULL) {
 			g = field_grid(&t, h, RC_KIND_PRESSURE, last_p, last_p_star,
-			    o.modulus, method_name);
+			    o.modulus, method_name, o.so.boundary);
 			memcpy(g->z, sigma, np * sizeof(double));
 			tool_write_grid(&t, g, o.field[GFMD_PRESSURE]);
 			rc_grid_free(g);
 		}
 		if (o.field[GFMD_CONTACT] != NULL || t.png != NULL) {
 			g = field_grid(&t, h, RC_KIND_MASK, last_p, last_p_star, o.modulus,
-			    method_name);
+			    method_name, o.so.boundary);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = mask[k] != 0;
 			if (o.field[GFMD_CONTACT] != NULL)
