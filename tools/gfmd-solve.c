@@ -3,7 +3,6 @@
  * indenter, one result row per pressure (see gfmd-solve(1)). */
 #include <errno.h>
 #include <getopt.h>
-#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -493,10 +492,9 @@ main(int argc, char **argv)
 					tool_fail(&t, "approach %g: %s", o.approach[k], err.msg);
 				tool_fail(&t, "p = %g: %s", p, err.msg);
 			}
-			/* Saturating: a resumed count (up to LONG_MAX from the
-			 * checkpoint) plus this piece must not overflow. */
-			iterations = res.iterations > LONG_MAX - iterations ?
-			    LONG_MAX : iterations + res.iterations;
+			/* A resumed count plus this piece, saturating. */
+			iterations = rc_checkpoint_iterations_add(iterations,
+			    res.iterations);
 			seconds += res.seconds;
 			if (r == 0 || !stop_flag)
 				break;
