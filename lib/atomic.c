@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 /* The only process-wide state of the library: the names of the temporary
- * files now open, so that a signal handler can remove them
+ * files now open (or tracked), so that a signal handler can remove them
  * (rc_atomic_unlink_pending).  Fixed buffers, because a handler may not
  * allocate; a slot is taken with the name written before the flag is set,
  * so a handler never sees half a name.  More than RC_ATOMIC_SLOTS files
@@ -44,6 +44,18 @@ pending_remove(const char *tmp)
 			pending_used[i] = 0;
 			return;
 		}
+}
+
+void
+rc_atomic_track(const char *tmp)
+{
+	pending_add(tmp);
+}
+
+void
+rc_atomic_untrack(const char *tmp)
+{
+	pending_remove(tmp);
 }
 
 int

@@ -57,5 +57,9 @@ int rc_atomic_remove(const char *path, rc_err *err);
  * a signal handler that must remove them before the process dies
  * (async-signal-safe: only unlink(2) on fixed buffers). */
 int rc_atomic_unlink_pending(void);	/* returns how many were removed */
+/* Add to those (and take out again) a temporary file made otherwise, such
+ * as a script for a helper program; untrack after removing it. */
+void rc_atomic_track(const char *tmp);
+void rc_atomic_untrack(const char *tmp);
 
 #endif

@@ -639,6 +639,12 @@ same(double a, double b)
 	return memcmp(&a, &b, sizeof(a)) == 0;
 }
 
+long
+rc_checkpoint_iterations_add(long done, long more)
+{
+	return more > LONG_MAX - done ? LONG_MAX : done + more;
+}
+
 int
 rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
     rc_err *err)

@@ -91,6 +91,11 @@ int rc_checkpoint_lock(const char *path, char **lock_path, rc_err *err);
 /* Remove the lock file, then release the lock; fd < 0 does nothing. */
 void rc_checkpoint_unlock(int fd, char *lock_path);
 
+/* The iteration count of a resumed solve: done (up to LONG_MAX, what a
+ * checkpoint may hold) plus more spent since, saturating at LONG_MAX
+ * rather than overflowing; both >= 0. */
+long rc_checkpoint_iterations_add(long done, long more);
+
 /* 0 if saved belongs to the same indenter and options as now (pressure
  * list, method, tol, E, alpha, fd, max_iter), else -1 naming the first
  * difference. */

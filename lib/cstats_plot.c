@@ -179,7 +179,16 @@ rc_cstats_gnuplot_write(const rc_cstats *res, const char *path, rc_err *err)
 	return rc;
 }
 
-/* An empty temporary file named like script with ".png" added. */
+/* Remove a temporary file of ours; until then a signal handler removes
+ * it (rc_atomic_track). */
+static void
+drop(const char *tmp)
+{
+	unlink(tmp);
+	rc_atomic_untrack(tmp);
+}
+
+/* An empty temporary file named like script with ".png" added, tracked. */
 static char *
 temp_beside_script(const char *script, rc_err *err)
 {
@@ -197,6 +206,7 @@ temp_beside_script(const char *script, rc_err *err)
 		free(name);
 		return NULL;
 	}
+	rc_atomic_track(name);
 	close(fd);
 	return name;
 }
@@ -244,22 +254,23 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	if ((fd = mkstemp(script)) < 0)
 		return rc_seterr(err, "temporary script %s: %s", script,
 		    strerror(errno));
+	rc_atomic_track(script);
 	if ((fp = fdopen(fd, "w")) == NULL) {
 		rc_seterr(err, "temporary script %s: %s", script, strerror(errno));
 		close(fd);
-		unlink(script);
+		drop(script);
 		return -1;
 	}
 	if (rc_atomic_open(&out, path, err) != 0) {
 		fclose(fp);
-		unlink(script);
+		drop(script);
 		return -1;
 	}
 	/* A device or FIFO target gets gnuplot's PNG through a temporary file,
 	 * copied in by us so that write errors are ours to report. */
 	if (out.direct && (png_tmp = temp_beside_script(script, err)) == NULL) {
 		fclose(fp);
-		unlink(script);
+		drop(script);
 		rc_atomic_abort(&out);
 		return -1;
 	}
@@ -269,7 +280,7 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 		rc = rc_seterr(err, "temporary script %s: %s", script,
 		    strerror(errno));
 	if (rc != 0) {
-		unlink(script);
+		drop(script);
 		rc_atomic_abort(&out);
 		return -1;
 	}
@@ -277,10 +288,10 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	rc = posix_spawnp(&pid, "gnuplot", NULL, NULL, argv, environ);
 	if (rc == 0 && waitpid(pid, &st, 0) < 0)
 		rc = errno;
-	unlink(script);
+	drop(script);
 	if (rc == ENOENT) {
 		if (png_tmp != NULL) {
-			unlink(png_tmp);
+			drop(png_tmp);
 			free(png_tmp);
 		}
 		rc_atomic_abort(&out);
@@ -290,7 +301,7 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	if (rc == 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0 && png_tmp != NULL)
 		rc = copy_file(png_tmp, out.fp);
 	if (png_tmp != NULL) {
-		unlink(png_tmp);
+		drop(png_tmp);
 		free(png_tmp);
 	}
 	if (rc != 0 || !WIFEXITED(st) || WEXITSTATUS(st) != 0) {

@@ -133,6 +133,25 @@ test_check_and_pending(void)
 	test_int(rc_atomic_unlink_pending(), 0, "a second call removes nothing");
 	rc_atomic_abort(&a);
 	test_true(access(path_buf[1], F_OK) != 0, "the target was never made");
+
+	/* A temporary file made otherwise, tracked: removed by the handler
+	 * until it is untracked. */
+	{
+		const char *own = tmp(1, "own.gp");
+		FILE *fp = fopen(own, "w");
+
+		test_true(fp != NULL && fclose(fp) == 0, "own temporary made");
+		rc_atomic_track(own);
+		test_int(rc_atomic_unlink_pending(), 1, "a tracked file is removed");
+		test_true(access(own, F_OK) != 0, "... and gone");
+		fp = fopen(own, "w");
+		test_true(fp != NULL && fclose(fp) == 0, "own temporary made again");
+		rc_atomic_track(own);
+		rc_atomic_untrack(own);
+		test_int(rc_atomic_unlink_pending(), 0, "an untracked one is not");
+		test_true(access(own, F_OK) == 0, "... and stays");
+		unlink(own);
+	}
 }
 
 /* Any command line is recorded in a form the reader accepts; a metadata

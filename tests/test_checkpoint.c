@@ -4,6 +4,7 @@
  * indenter or other options are refused by rc_checkpoint_match, and a
  * truncated file or one whose fields are out of range is refused by
  * rc_checkpoint_read (never read as a checkpoint). */
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -317,10 +318,52 @@ bad_files(void)
 	free(bytes);
 }
 
+/* The resumed iteration count saturates at LONG_MAX (a checkpoint may
+ * hold up to it, and the sum must not overflow); a count of LONG_MAX
+ * survives a write and read. */
+static void
+saturation(void)
+{
+	rc_grid *g = indenter(), *u = NULL;
+	rc_checkpoint c, back;
+	rc_err err;
+	double *z = calloc(NX * NY, sizeof(double));
+
+	test_int(rc_checkpoint_iterations_add(0, 0), 0, "iterations: 0 + 0");
+	test_int(rc_checkpoint_iterations_add(777, 23), 800, "iterations: 777 + 23");
+	test_int(rc_checkpoint_iterations_add(LONG_MAX - 1, 1), LONG_MAX,
+	    "iterations: LONG_MAX - 1 + 1 = LONG_MAX exactly");
+	test_int(rc_checkpoint_iterations_add(LONG_MAX - 1, 2), LONG_MAX,
+	    "iterations: LONG_MAX - 1 + 2 saturates");
+	test_int(rc_checkpoint_iterations_add(LONG_MAX, 100000), LONG_MAX,
+	    "iterations: LONG_MAX + max_iter saturates");
+	test_int(rc_checkpoint_iterations_add(3, LONG_MAX), LONG_MAX,
+	    "iterations: 3 + LONG_MAX saturates");
+	test_int(rc_checkpoint_iterations_add(LONG_MAX, LONG_MAX), LONG_MAX,
+	    "iterations: LONG_MAX + LONG_MAX saturates");
+	test_int(rc_checkpoint_iterations_add(LONG_MAX / 2, LONG_MAX / 2),
+	    LONG_MAX - 1, "iterations: 2 (LONG_MAX / 2) does not saturate");
+	fill(&c, g);
+	c.iterations = LONG_MAX;
+	test_int(rc_checkpoint_write(&c, z, tmp(0, "max.ck"), &err), 0,
+	    "write with iterations LONG_MAX: %s", err.msg);
+	test_int(rc_checkpoint_read(&back, &u, tmp(0, "max.ck"), &err), 0,
+	    "read it back: %s", err.msg);
+	test_int(back.iterations, LONG_MAX, "iterations LONG_MAX back");
+	test_int(rc_checkpoint_iterations_add(back.iterations, 1), LONG_MAX,
+	    "... and resumed, saturate");
+	rc_grid_free(u);
+	rc_checkpoint_free(&back);
+	rc_checkpoint_free(&c);
+	rc_grid_free(g);
+	free(z);
+}
+
 int
 main(void)
 {
 	round_trip();
+	saturation();
 	identity();
 	bad_files();
 	return test_summary();

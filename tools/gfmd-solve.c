@@ -3,7 +3,6 @@
  * indenter, one result row per pressure (see gfmd-solve(1)). */
 #include <errno.h>
 #include <getopt.h>
-#include <limits.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -223,10 +222,12 @@ usage(void)
 "  --version            the version\n");
 }
 
-/* Make a field grid shaped and labelled like the indenter. */
+/* Make a field grid shaped and labelled like the indenter, periodic as
+ * the solve was: free boundaries make an isolated patch of any grid. */
 static rc_grid *
 field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
-    double p, double p_star, double modulus, const char *method)
+    double p, double p_star, double modulus, const char *method,
+    enum rc_boundary boundary)
 {
 	rc_err err;
 	rc_grid *g = rc_grid_clone(h, 0, &err);
@@ -234,6 +235,7 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 	if (g == NULL)
 		tool_fail(t, "%s", err.msg);
 	g->kind = kind;
+	g->periodic = boundary == RC_BOUNDARY_PERIODIC;
 	/* Pressures (units of E*) and the mask are no lengths. */
 	if (!rc_kind_is_length(kind))
 		g->z_unit[0] = '\0';
@@ -499,10 +501,9 @@ main(int argc, char **argv)
 					tool_fail(&t, "approach %g: %s", o.approach[k], err.msg);
 				tool_fail(&t, "p = %g: %s", p, err.msg);
 			}
-			/* Saturating: a resumed count (up to LONG_MAX from the
-			 * checkpoint) plus this piece must not overflow. */
-			iterations = res.iterations > LONG_MAX - iterations ?
-			    LONG_MAX : iterations + res.iterations;
+			/* A resumed count plus this piece, saturating. */
+			iterations = rc_checkpoint_iterations_add(iterations,
+			    res.iterations);
 			seconds += res.seconds;
 			if (r == 0 || !stop_flag)
 				break;
@@ -682,14 +683,14 @@ main(int argc, char **argv)
 
 		if (o.field[GFMD_DISPLACEMENT] != NULL) {
 			g = field_grid(&t, h, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-			    o.modulus, method_name);
+			    o.modulus, method_name, o.so.boundary);
 			memcpy(g->z, u, np * sizeof(double));
 			tool_write_grid(&t, g, o.field[GFMD_DISPLACEMENT]);
 			rc_grid_free(g);
 		}
 		if (o.field[GFMD_GAP] != NULL) {
 			g = field_grid(&t, h, RC_KIND_GAP, last_p, last_p_star, o.modulus,
-			    method_name);
+			    method_name, o.so.boundary);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = u[k] - h->z[k];
 			tool_write_grid(&t, g, o.field[GFMD_GAP]);
@@ -697,14 +698,14 @@ main(int argc, char **argv)
 		}
 		if (o.field[GFMD_PRESSURE] != NULL) {
 			g = field_grid(&t, h, RC_KIND_PRESSURE, last_p, last_p_star,
-			    o.modulus, method_name);
+			    o.modulus, method_name, o.so.boundary);
 			memcpy(g->z, sigma, np * sizeof(double));
 			tool_write_grid(&t, g, o.field[GFMD_PRESSURE]);
 			rc_grid_free(g);
 		}
 		if (o.field[GFMD_CONTACT] != NULL || t.png != NULL) {
 			g = field_grid(&t, h, RC_KIND_MASK, last_p, last_p_star, o.modulus,
-			    method_name);
+			    method_name, o.so.boundary);
 			for (size_t k = 0; k < np; k++)
 				g->z[k] = mask[k] != 0;
 			if (o.field[GFMD_CONTACT] != NULL)

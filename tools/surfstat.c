@@ -170,6 +170,50 @@ num(const struct tool *t, rc_row *r, const char *name, double v)
 		tool_fail(t, "out of memory");
 }
 
+/* Why the scale-free columns of s that are nan are undefined (they are
+ * ratios of moments: lib/stats.h); NULL if none is.  names (at least 80
+ * bytes: all twelve fit) gets them. */
+static const char *
+scalars_nan_why(const rc_stats *s, char *names, size_t size)
+{
+	static const char *const name[] = { "skewness", "kurtosis", "nayak" };
+	double v[3] = { s->skewness, s->kurtosis, s->nayak };
+	int nphi = 0, first = 1;
+	size_t len = 0;
+
+	names[0] = '\0';
+	for (int i = 0; i < 3; i++)
+		if (isnan(v[i])) {
+			len += (size_t)snprintf(names + len, size - len, "%s%s",
+			    first ? "" : ", ", name[i]);
+			first = 0;
+		}
+	for (int i = 1; i <= 9; i++)
+		nphi += isnan(s->phi[i]) != 0;
+	for (int i = 1; i <= 9 && nphi > 0 && len < size; i++)
+		if (nphi == 9 || isnan(s->phi[i])) {
+			len += (size_t)snprintf(names + len, size - len,
+			    nphi == 9 ? "%sphi1 .. phi9" : "%sphi%d", first ? "" : ", ",
+			    i);
+			first = 0;
+			if (nphi == 9)
+				break;
+		}
+	if (first)
+		return NULL;
+	if (!(s->hrms > 0))
+		return "the heights are constant (hrms = 0), and these are "
+		    "normalised by hrms or the rms gradient";
+	if (!(s->gbar > 0))
+		return "the rms gradient is 0 (the heights are constant up to "
+		    "round-off), and the Nayak parameter and the phi are "
+		    "normalised by it";
+	if (!(s->mxx > 0))
+		return "the rms slope along x is 0, and the Nayak parameter (of "
+		    "profiles along x) is normalised by it";
+	return "a moment they are normalised by is 0";
+}
+
 static void
 scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft)
@@ -179,13 +223,18 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	rc_row r;
 	struct out o;
 	double gbar, seconds;
-	char name[8];
+	char name[8], names[128];
+	const char *why;
 
 	seconds = rc_clock();
 	if (rc_rms_gradient(g, fft, &gbar, &err) != 0 ||
 	    rc_stats_compute_fft(g, mask, m, fft, &s, &err) != 0)
 		tool_fail(t, "%s", err.msg);
 	seconds = rc_clock() - seconds;
+	/* nan stays in the table (undefined, not unknown); say why once */
+	if ((why = scalars_nan_why(&s, names, sizeof(names))) != NULL)
+		tool_warn(t, "%s written as nan%s: %s", names,
+		    mask != NULL ? " (averages over the mask)" : "", why);
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||

@@ -42,6 +42,18 @@ check_rel "Hertz free: fire and cg agree on a_r" "$(col "$T/hz_fire.tsv" a_r)" "
 gfmd-solve -q -j 1 --pressure-abs "$F" "$T/hertz.txt" > "$T/hz_per.tsv"
 check "periodic is the default for a periodic grid" test "$(col "$T/hz_per.tsv" boundary)" = periodic
 check_range "Hertz periodic: approach far from a^2/R" "$(col "$T/hz_per.tsv" approach)" 0 0.05
+# The fields of a free solve describe an isolated patch: periodic = 0 in
+# their headers although the indenter is periodic; a periodic solve's
+# fields stay periodic.
+gfmd-solve -q -j 1 --boundary free --pressure-abs "$F" --gap "$T/fg.surf" \
+    --pressure "$T/fp.surf" --contact "$T/fc.surf" --displacement "$T/fu.surf" \
+    "$T/hertz.txt" > /dev/null
+check "free fields written" test $? -eq 0
+for field in fg fp fc fu; do
+	check "free field $field: periodic = 0" grep -aq '^periodic = 0$' "$T/$field.surf"
+done
+gfmd-solve -q -j 1 --pressure-abs "$F" --gap "$T/pg.surf" "$T/hertz.txt" > /dev/null
+check "periodic field: periodic = 1" grep -aq '^periodic = 1$' "$T/pg.surf"
 
 # --- Refusals.
 check_status "--boundary bogus" 2 gfmd-solve --boundary bogus -p 0.1 "$T/hertz.txt"

@@ -213,5 +213,26 @@ check_status "gfmd-solve: a one-point contact" 0 gfmd-solve -q -p 1e-6 -o one-po
 check "... n_c = 1" [ "$(col one-point.tsv n_c)" = 1 ]
 check "... kappa_c nan" [ "$(col one-point.tsv kappa_c)" = nan ]
 check "... and a warning says why" grep -q "kappa_c written as nan: the rms gradient over the contact, gbar_c, is 0" "$T_TMP/stderr"
+# surfstat on degenerate surfaces: the undefined ratios stay nan in the
+# table, exit 0, and one warning names the columns and why.  A warp with
+# bounds far outside the heights makes them equal to round-off (hrms of
+# round-off, gbar exactly 0); a flat surface has hrms = 0 too; a sine
+# along y has no slope along x, the Nayak parameter's profiles.
+surfgen -q -n 64 --seed 1 | surfwarp -q -w 2 --hmin -1e300 --hmax 1e300 -o warped.surf
+check_status "surfstat on a surface warped flat: exit 0" 0 surfstat -o warped.tsv warped.surf
+check "... nayak and phi1 .. phi9 nan" [ "$(col warped.tsv nayak) $(col warped.tsv phi1) $(col warped.tsv phi9)" = "nan nan nan" ]
+check "... and one warning says which and why ($(head -c 200 "$T_TMP/stderr"))" \
+    grep -q "^surfstat: nayak, phi1 .. phi9 written as nan: the rms gradient is 0" "$T_TMP/stderr"
+check "... only one line" [ "$(wc -l < "$T_TMP/stderr")" -eq 1 ]
+surfgen -q --type flat -n 16 -o flat.surf
+check_status "surfstat on a flat surface: exit 0" 0 surfstat -q -o flat.tsv flat.surf
+check "... skewness nan" [ "$(col flat.tsv skewness)" = nan ]
+check "... warned (also under -q): hrms = 0" grep -q "^surfstat: skewness, kurtosis, nayak, phi1 .. phi9 written as nan: the heights are constant (hrms = 0)" "$T_TMP/stderr"
+surfgen -q --type sine -n 32 | surfwarp -q --transpose -o ysine.surf
+check_status "surfstat on a sine along y: exit 0" 0 surfstat -o ysine.tsv ysine.surf
+check "... nayak nan, phi9 defined" [ "$(col ysine.tsv nayak) $(col ysine.tsv phi9)" = "nan 1" ]
+check "... warned: no slope along x" grep -q "^surfstat: nayak written as nan: the rms slope along x is 0" "$T_TMP/stderr"
+check_status "surfstat on a rough surface: no warning" 0 surfstat -o one-again.tsv one.surf
+check "... stderr empty" [ ! -s "$T_TMP/stderr" ]
 
 summary

@@ -175,12 +175,16 @@ tail -c 8192 inplace2.surf > inplace2.bin
 check "  the same heights as a fresh output" cmp -s fresh.bin inplace2.bin
 
 # --- a signal while an output is written ----------------------------------
-# SIGTERM while a big text grid is being written (about 1 s for 1024^2):
-# the tool dies of the signal, says so, and leaves no .NAME.XXXXXX
-# temporary, and what it leaves is complete (outputs finished before it
-# are kept).  If the tool finished before its
-# temporary file was seen, the case cannot be tested here and is skipped.
-killed_while_writing() {	# DESC RE CMD...: run in sig/, killed when a temporary .RE.* appears
+# SIGTERM while a big output is being written (about 1 s for a 1024^2
+# text grid): the tool dies of the signal, says so, and leaves no
+# .NAME.XXXXXX temporary, and what it leaves is complete (outputs finished
+# before it are kept).  The tool is stopped (SIGSTOP) as soon as its
+# temporary file is seen, and the file looked for again while it cannot
+# move: the signal, sent then and delivered on SIGCONT, finds that file
+# however loaded the machine is.  A tool that ended, or finished the file,
+# before it was stopped is said so and skipped, never counted as a pass
+# or a failure.
+killed_while_writing() {	# DESC RE CMD...: run in sig/, killed while a temporary .RE.* exists
 	what=$1 name=$2; shift 2
 	rm -rf sig; mkdir sig
 	(cd sig && exec "$@") 2>sig.err >/dev/null & pid=$!
@@ -188,13 +192,15 @@ killed_while_writing() {	# DESC RE CMD...: run in sig/, killed when a temporary 
 	while [ $n -lt 600 ] && ! ls -A sig | grep -Eq "^\.($name)\." && kill -0 $pid 2>/dev/null; do
 		sleep 0.05; n=$((n + 1))
 	done
+	kill -STOP $pid 2>/dev/null; stopped=$?
 	seen=$(ls -A sig | tr '\n' ' ')
-	kill -TERM $pid 2>/dev/null; killed=$?
+	kill -TERM $pid 2>/dev/null
+	kill -CONT $pid 2>/dev/null
 	wait $pid; st=$?
+	[ $stopped = 0 ] || { skip 4 "$what: the tool ended before the signal (exit $st)"; return; }
 	if ! echo "$seen" | tr ' ' '\n' | grep -Eq "^\.($name)\."; then
-		skip 4 "$what: no temporary file seen before the tool ended ($seen)"; return
+		skip 4 "$what: no temporary file when the signal came ($seen; exit $st)"; return
 	fi
-	[ $killed = 0 ] || { skip 4 "$what: the tool ended before the signal"; return; }
 	check "$what: dies of SIGTERM (exit $st, want 143)" [ "$st" = 143 ]
 	check "$what: no temporary file left ($(ls -A sig | tr '\n' ' '))" \
 	    [ -z "$(ls -A sig | grep '^\.')" ]
@@ -205,12 +211,30 @@ killed_while_writing() {	# DESC RE CMD...: run in sig/, killed when a temporary 
 		surfstat -q -L 1 -o /dev/null "$f" 2>/dev/null || ok=0
 	done
 	check "$what: every output left is complete" [ $ok = 1 ]
-	check "$what: says so" grep -q "terminated (SIGTERM); unfinished output files removed" sig.err
+	check "$what: says so ($(head -c 200 sig.err))" grep -q "terminated (SIGTERM); unfinished output files removed" sig.err
 }
 killed_while_writing "surfgen -o big.txt" 'big\.txt' surfgen -n 1024 -o big.txt
 surfgen -n 512 -o big.surf
 killed_while_writing "gfmd-solve, fields" '(gap|p|u)\.txt' gfmd-solve -q --max-iter 1 -p 0.1 \
     --gap gap.txt --pressure p.txt --displacement u.txt -o rows.tsv ../big.surf
+surfgen -n 1024 -o big1024.surf
+killed_while_writing "surfwarp -o w.txt" 'w\.txt' surfwarp -w 2 -o w.txt ../big1024.surf
+killed_while_writing "surfstat --psd2d" 'psd\.txt' surfstat -q --psd2d psd.txt -o row.tsv ../big1024.surf
+# contact-stats writes little itself; its longest output is --png, made by
+# gnuplot into the temporary file beside the target.  A stand-in gnuplot
+# that waits on a FIFO holds it there for as long as the check needs; the
+# temporary gnuplot script (in TMPDIR) must go too.
+mkdir -p gpbin gptmp
+mkfifo gpgate
+printf '#!/bin/sh\n: > "%s"\nread x < "%s"\nexit 1\n' "$PWD/gpstarted" "$PWD/gpgate" > gpbin/gnuplot
+chmod +x gpbin/gnuplot
+gfmd-solve -q -p 0.05,0.1 -o cs-rows.tsv s.surf
+killed_while_writing "contact-stats --png" 'k\.png' env TMPDIR="$PWD/gptmp" \
+    PATH="$PWD/gpbin:$PATH" contact-stats -q --no-extrapolate --png k.png -o t.tsv ../cs-rows.tsv
+check "contact-stats --png: its gnuplot script is removed too ($(ls -A gptmp | tr '\n' ' '))" \
+    [ -z "$(ls -A gptmp)" ]
+# release the stand-in (if it never started, nobody reads: time out)
+[ -e gpstarted ] && timeout 10 sh -c 'echo > "$1"' sh gpgate
 
 # --- any command line makes a file the toolkit reads back ------------------
 # A control character or a byte that is not UTF-8 in an argument (here a

@@ -62,6 +62,7 @@ write_field(const struct tool *t, const rc_grid *h, size_t ny,
 	if (g == NULL)
 		tool_fail(t, "%s", err.msg);
 	g->kind = kind;
+	g->periodic = 1;	/* as the solve (periodic only), like the serial tool */
 	if (rc_grid_meta_setd(g, "p", p, &err) != 0 ||
 	    rc_grid_meta_setd(g, "p_star", p_star, &err) != 0 ||
 	    rc_grid_meta_setd(g, "E", modulus, &err) != 0 ||
