@@ -247,8 +247,36 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 	return g;
 }
 
-int
-main(int argc, char **argv)
+/* Everything one run holds, so that main reads as the run's steps. */
+struct run {
+	struct tool t;
+	struct gfmd_opts o;
+	int argc;
+	char **argv;
+	const char *input;		/* NULL: standard input */
+	rc_grid *h;			/* the indenter */
+	double gbar;			/* its rms gradient */
+	rc_fft fft;			/* the analysis plan (spectral gbar_c) */
+	rc_solver *solver;
+	double plan_seconds;
+	size_t npressures;
+	size_t first;			/* the first pressure to solve (resume) */
+	long resumed_iterations;	/* of that pressure, from the checkpoint */
+	size_t nunconverged;
+	double last_p, last_p_star;
+	rc_checkpoint ck, saved;	/* written (--checkpoint), read (--resume) */
+	rc_grid *saved_u;
+	rc_atomic out;
+	rc_table_out table;
+	rc_row row;
+	rc_contact_opts co;
+	struct progress pr;
+	struct sigaction sa;
+};
+
+/* Options into r->o, checked together; 1 after --help. */
+static int
+parse_options(struct run *r, int argc, char **argv)
 {
 	static const struct option longopts[] = {
 		GFMD_LONGOPTS,
@@ -257,208 +285,238 @@ main(int argc, char **argv)
 		TOOL_CHANNEL_LONGOPT,
 		{ NULL, 0, NULL, 0 }
 	};
-	struct tool t;
-	struct gfmd_opts o;
-	rc_contact_opts co;
-	rc_solver *solver;
-	rc_grid *h;
-	rc_fft fft;
+	struct gfmd_opts *o = &r->o;
 	rc_err err;
-	rc_atomic out;
-	rc_table_out table;
-	rc_row row;
-	struct progress pr;
-	struct sigaction sa;
-	double gbar, last_p = 0, last_p_star = 0, plan_seconds;
-	size_t npressures = 0, nunconverged = 0;
-	const char *input;
-	rc_checkpoint ck, saved;
-	rc_grid *saved_u = NULL;
-	size_t first = 0;
-	long resumed_iterations = 0;
-	int c, method, status = 0;
+	int c;
 
-	tool_init(&t, "gfmd-solve", argc, argv);
-	gfmd_opts_init(&o);
+	r->argc = argc;
+	r->argv = argv;
+	tool_init(&r->t, "gfmd-solve", argc, argv);
+	gfmd_opts_init(o);
 	opterr = 0;	/* tool_bad reports, so that all problems are counted */
 	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
 		if (c == 'h') {
 			usage();
-			return tool_exit(&t, 0);
+			return 1;
 		}
-		gfmd_option(&t, &o, c, optarg, argv);
+		gfmd_option(&r->t, o, c, optarg, argv);
 	}
-	gfmd_opts_check(&t, &o, argc, argv);
-	tool_usage_check(&t);
-	input = optind < argc ? argv[optind] : NULL;
-	if (o.ck_path != NULL) {
-		if ((lock_fd = rc_checkpoint_lock(o.ck_path, &lock_path, &err)) == -1)
-			tool_fail(&t, "--checkpoint %s: %s", o.ck_path, err.msg);
+	gfmd_opts_check(&r->t, o, argc, argv);
+	tool_usage_check(&r->t);
+	r->input = optind < argc ? argv[optind] : NULL;
+	if (o->ck_path != NULL) {
+		if ((lock_fd = rc_checkpoint_lock(o->ck_path, &lock_path, &err)) == -1)
+			tool_fail(&r->t, "--checkpoint %s: %s", o->ck_path, err.msg);
 		atexit(unlock_at_exit);
 	}
-	npressures = o.napproach ? o.napproach : o.nreduced ? o.nreduced :
-	    o.nabsolute;
+	r->npressures = o->napproach ? o->napproach : o->nreduced ? o->nreduced :
+	    o->nabsolute;
+	return 0;
+}
 
-	tool_fft_setup(&t);
-	h = tool_read_input(&t, input);
-	if (o.resume_path != NULL) {
-		/* Options that decide the rows default to the checkpoint's;
-		 * those given must match it (rc_checkpoint_match below). */
-		if (rc_checkpoint_read(&saved, &saved_u, o.resume_path, &err) != 0)
-			tool_fail_at(&t, o.resume_path, err.msg);
-		if (!o.given_method && (method = rc_method_parse(saved.method)) >= 0)
-			o.so.method = (enum rc_method)method;
-		if (!o.given_tol)
-			o.so.tol = saved.tol;
-		if (!o.given_e)
-			o.modulus = saved.modulus;
-		if (!o.given_alpha)
-			o.alpha = saved.alpha;
-		if (!o.given_fd)
-			o.fd = saved.fd;
-		if (!o.given_max_iter)
-			o.so.max_iter = saved.max_iter;
-		if (!o.nreduced && !o.nabsolute) {
-			double *copy = malloc(saved.npressures * sizeof(double));
+/* --resume: the options that decide the rows default to the checkpoint's
+ * (those given must match it: checkpoint_setup). */
+static void
+resume_defaults(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_checkpoint *saved = &r->saved;
+	rc_err err;
+	int method;
 
-			if (copy == NULL)
-				tool_fail(&t, "out of memory");
-			memcpy(copy, saved.pressures, saved.npressures * sizeof(double));
-			if (saved.reduced) {
-				o.reduced = copy;
-				o.nreduced = saved.npressures;
-			} else {
-				o.absolute = copy;
-				o.nabsolute = saved.npressures;
-			}
-			npressures = saved.npressures;
+	if (rc_checkpoint_read(saved, &r->saved_u, o->resume_path, &err) != 0)
+		tool_fail_at(&r->t, o->resume_path, err.msg);
+	if (!o->given_method && (method = rc_method_parse(saved->method)) >= 0)
+		o->so.method = (enum rc_method)method;
+	if (!o->given_tol)
+		o->so.tol = saved->tol;
+	if (!o->given_e)
+		o->modulus = saved->modulus;
+	if (!o->given_alpha)
+		o->alpha = saved->alpha;
+	if (!o->given_fd)
+		o->fd = saved->fd;
+	if (!o->given_max_iter)
+		o->so.max_iter = saved->max_iter;
+	if (!o->nreduced && !o->nabsolute) {
+		double *copy = malloc(saved->npressures * sizeof(double));
+
+		if (copy == NULL)
+			tool_fail(&r->t, "out of memory");
+		memcpy(copy, saved->pressures, saved->npressures * sizeof(double));
+		if (saved->reduced) {
+			o->reduced = copy;
+			o->nreduced = saved->npressures;
+		} else {
+			o->absolute = copy;
+			o->nabsolute = saved->npressures;
 		}
+		r->npressures = saved->npressures;
 	}
-	if (o.ck_path != NULL || o.resume_path != NULL) {
-		if (rc_checkpoint_init(&ck, h, o.nreduced ? o.reduced : o.absolute,
-		    npressures, &err) != 0)
-			tool_fail(&t, "%s", err.msg);
-		snprintf(ck.method, sizeof(ck.method), "%s", rc_method_name(o.so.method));
-		ck.tol = o.so.tol;
-		ck.modulus = o.modulus;
-		ck.alpha = o.alpha;
-		ck.fd = o.fd;
-		ck.max_iter = o.so.max_iter;
-		ck.reduced = o.nreduced != 0;
-	}
-	if (o.resume_path != NULL) {
-		if (rc_checkpoint_match(&saved, &ck, &err) != 0)
-			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
-		if (saved_u->nx != h->nx || saved_u->ny != h->ny)
-			tool_fail(&t, "--resume %s: %zux%zu field, the indenter is "
-			    "%zux%zu", o.resume_path, saved_u->nx, saved_u->ny, h->nx,
-			    h->ny);
-	}
-	/* Free boundaries (issue 16): the grid's periodic flag decides unless
+}
+
+/* The checkpoint this run writes, and the one it resumes checked
+ * against it. */
+static void
+checkpoint_setup(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_checkpoint *ck = &r->ck;
+	rc_err err;
+
+	if (o->ck_path == NULL && o->resume_path == NULL)
+		return;
+	if (rc_checkpoint_init(ck, r->h, o->nreduced ? o->reduced : o->absolute,
+	    r->npressures, &err) != 0)
+		tool_fail(&r->t, "%s", err.msg);
+	snprintf(ck->method, sizeof(ck->method), "%s", rc_method_name(o->so.method));
+	ck->tol = o->so.tol;
+	ck->modulus = o->modulus;
+	ck->alpha = o->alpha;
+	ck->fd = o->fd;
+	ck->max_iter = o->so.max_iter;
+	ck->reduced = o->nreduced != 0;
+	if (o->resume_path == NULL)
+		return;
+	if (rc_checkpoint_match(&r->saved, ck, &err) != 0)
+		tool_fail(&r->t, "--resume %s: %s", o->resume_path, err.msg);
+	if (r->saved_u->nx != r->h->nx || r->saved_u->ny != r->h->ny)
+		tool_fail(&r->t, "--resume %s: %zux%zu field, the indenter is "
+		    "%zux%zu", o->resume_path, r->saved_u->nx, r->saved_u->ny,
+		    r->h->nx, r->h->ny);
+}
+
+/* The boundary kind, the indenter's rms gradient gbar (the unit of p*)
+ * and the checks on its scale. */
+static void
+indenter_setup(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	const rc_grid *h = r->h;
+	const char *name = r->input ? r->input : "standard input";
+	double lo = INFINITY, hi = -INFINITY;
+	rc_err err;
+
+	/* Free boundaries: the grid's periodic flag decides unless
 	 * --boundary is given. */
-	o.so.boundary = o.boundary >= 0 ? (enum rc_boundary)o.boundary :
+	o->so.boundary = o->boundary >= 0 ? (enum rc_boundary)o->boundary :
 	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
-	if (o.so.boundary == RC_BOUNDARY_PERIODIC)
-		tool_check_wrap(&t, h, input);
-	else if (o.given_kernel && o.so.kernel != RC_KERNEL_PIXEL)
-		tool_fail(&t, "--kernel %s: %s is solved with free boundaries "
+	if (o->so.boundary == RC_BOUNDARY_PERIODIC)
+		tool_check_wrap(&r->t, h, r->input);
+	else if (o->given_kernel && o->so.kernel != RC_KERNEL_PIXEL)
+		tool_fail(&r->t, "--kernel %s: %s is solved with free boundaries "
 		    "(not marked periodic), which always use Love's pixel "
 		    "compliance; drop --kernel or add --boundary periodic",
-		    rc_kernel_name(o.so.kernel), input ? input : "standard input");
+		    rc_kernel_name(o->so.kernel), name);
 	/* The analysis plan lives as long as the solver; --fd and free
 	 * boundaries need none. */
-	memset(&fft, 0, sizeof(fft));
-	if (o.so.boundary == RC_BOUNDARY_FREE)
-		gbar = rc_contact_gbar_open(h);
-	else if (o.fd)
-		gbar = rc_contact_gbar_fd(h);
-	else if (rc_fft_init(&fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
-	    rc_rms_gradient(h, &fft, &gbar, &err) != 0)
-		tool_fail(&t, "%s", err.msg);
-	{
-		double lo = INFINITY, hi = -INFINITY;
-
-		for (size_t k = 0; k < rc_grid_size(h); k++) {
-			lo = fmin(lo, h->z[k]);
-			hi = fmax(hi, h->z[k]);
-		}
-		gfmd_check_scale(&t, input, hi - lo, gbar);
+	memset(&r->fft, 0, sizeof(r->fft));
+	if (o->so.boundary == RC_BOUNDARY_FREE)
+		r->gbar = rc_contact_gbar_open(h);
+	else if (o->fd)
+		r->gbar = rc_contact_gbar_fd(h);
+	else if (rc_fft_init(&r->fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
+	    rc_rms_gradient(h, &r->fft, &r->gbar, &err) != 0)
+		tool_fail(&r->t, "%s", err.msg);
+	for (size_t k = 0; k < rc_grid_size(h); k++) {
+		lo = fmin(lo, h->z[k]);
+		hi = fmax(hi, h->z[k]);
 	}
-	if (o.nreduced && !(gbar > 0))
-		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
+	gfmd_check_scale(&r->t, r->input, hi - lo, r->gbar);
+	if (o->nreduced && !(r->gbar > 0))
+		tool_fail(&r->t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
-		    input ? input : "standard input");
+		    name);
+}
 
-	o.so.modulus = o.modulus;
-	o.so.stop = (volatile int *)&stop_flag;
-	pr.name = t.name;
-	pr.shown = 0;
-	if (!t.quiet && isatty(STDERR_FILENO)) {
-		o.so.progress = show_progress;
-		o.so.progress_ctx = &pr;
+/* The solver, planned and timed, started from --init or the checkpoint. */
+static void
+solver_setup(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
+
+	o->so.modulus = o->modulus;
+	o->so.stop = (volatile int *)&stop_flag;
+	r->pr.name = r->t.name;
+	r->pr.shown = 0;
+	if (!r->t.quiet && isatty(STDERR_FILENO)) {
+		o->so.progress = show_progress;
+		o->so.progress_ctx = &r->pr;
 	}
 	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
-	o.so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
-	plan_seconds = rc_clock();
-	if ((solver = rc_solver_new(h, &o.so, &err)) == NULL)
-		tool_fail(&t, "%s", err.msg);
-	tool_fft_finish(&t);
-	plan_seconds = rc_clock() - plan_seconds;
-	if (o.init != NULL) {
-		rc_grid *u = tool_read_grid(&t, o.init);
+	o->so.measure = (int)tool_fft_effort(&r->t, r->h->nx, r->h->ny, 1e4);
+	r->plan_seconds = rc_clock();
+	if ((r->solver = rc_solver_new(r->h, &o->so, &err)) == NULL)
+		tool_fail(&r->t, "%s", err.msg);
+	tool_fft_finish(&r->t);
+	r->plan_seconds = rc_clock() - r->plan_seconds;
+	if (o->init != NULL) {
+		rc_grid *u = tool_read_grid(&r->t, o->init);
 
-		tool_grid_to_unit(&t, u, o.init, h->unit);
-		if (u->nx != h->nx || u->ny != h->ny)
-			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
-			    u->nx, u->ny, h->nx, h->ny);
-		if (rc_solver_set_displacement(solver, u->z, &err) != 0)
-			tool_fail_at(&t, o.init, err.msg);
+		tool_grid_to_unit(&r->t, u, o->init, r->h->unit);
+		if (u->nx != r->h->nx || u->ny != r->h->ny)
+			tool_fail(&r->t, "%s: %zux%zu grid, the indenter is %zux%zu",
+			    o->init, u->nx, u->ny, r->h->nx, r->h->ny);
+		if (rc_solver_set_displacement(r->solver, u->z, &err) != 0)
+			tool_fail_at(&r->t, o->init, err.msg);
 		rc_grid_free(u);
 	}
-	if (o.resume_path != NULL) {
-		if (rc_solver_set_displacement(solver, saved_u->z, &err) != 0)
-			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
-		rc_grid_free(saved_u);
-		first = saved.next;
-		if (saved.solving)
-			resumed_iterations = saved.iterations;
+	if (o->resume_path != NULL) {
+		if (rc_solver_set_displacement(r->solver, r->saved_u->z, &err) != 0)
+			tool_fail(&r->t, "--resume %s: %s", o->resume_path, err.msg);
+		rc_grid_free(r->saved_u);
+		r->saved_u = NULL;
+		r->first = r->saved.next;
+		if (r->saved.solving)
+			r->resumed_iterations = r->saved.iterations;
 	}
+}
 
-	memset(&sa, 0, sizeof(sa));
-	sa.sa_handler = on_signal;
-	sigemptyset(&sa.sa_mask);
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
+/* The output opened, the first SIGINT/SIGTERM made a stop request, the
+ * rows a resumed run finished repeated, the checkpoint timer armed. */
+static void
+output_begin(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
 
-	if (rc_atomic_open(&out, t.out, &err) != 0)
-		tool_fail_at(&t, t.out, err.msg);
-	tool_table_begin(&t, &table, out.fp);
-	rc_row_init(&row);
-	rc_contact_defaults(&co);
-	co.alpha = o.alpha;
-	co.modulus = o.modulus;
-	co.gbar = gbar;
-	co.fft = o.fd || o.so.boundary == RC_BOUNDARY_FREE ? NULL : &fft;
-	co.fd = o.fd;
-	co.nonperiodic = o.so.boundary == RC_BOUNDARY_FREE;
-	/* A resumed run first repeats the rows its checkpoint finished. */
-	for (size_t k = 0; k < first; k++) {
-		if (rc_checkpoint_row(&saved, k, &row, &err) != 0 ||
-		    (o.ck_path != NULL && rc_checkpoint_add_row(&ck, &row, &err) != 0)) {
-			rc_atomic_abort(&out);
-			tool_fail(&t, "--resume %s: %s", o.resume_path, err.msg);
+	memset(&r->sa, 0, sizeof(r->sa));
+	r->sa.sa_handler = on_signal;
+	sigemptyset(&r->sa.sa_mask);
+	sigaction(SIGINT, &r->sa, NULL);
+	sigaction(SIGTERM, &r->sa, NULL);
+
+	if (rc_atomic_open(&r->out, r->t.out, &err) != 0)
+		tool_fail_at(&r->t, r->t.out, err.msg);
+	tool_table_begin(&r->t, &r->table, r->out.fp);
+	rc_row_init(&r->row);
+	rc_contact_defaults(&r->co);
+	r->co.alpha = o->alpha;
+	r->co.modulus = o->modulus;
+	r->co.gbar = r->gbar;
+	r->co.fft = o->fd || o->so.boundary == RC_BOUNDARY_FREE ? NULL : &r->fft;
+	r->co.fd = o->fd;
+	r->co.nonperiodic = o->so.boundary == RC_BOUNDARY_FREE;
+	for (size_t k = 0; k < r->first; k++) {
+		if (rc_checkpoint_row(&r->saved, k, &r->row, &err) != 0 ||
+		    (o->ck_path != NULL &&
+		    rc_checkpoint_add_row(&r->ck, &r->row, &err) != 0)) {
+			rc_atomic_abort(&r->out);
+			tool_fail(&r->t, "--resume %s: %s", o->resume_path, err.msg);
 		}
-		if (rc_table_write(&table, &row, &err) != 0) {
-			rc_atomic_abort(&out);
-			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
+		if (rc_table_write(&r->table, &r->row, &err) != 0) {
+			rc_atomic_abort(&r->out);
+			tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output",
+			    err.msg);
 		}
 	}
-	if (o.resume_path != NULL && first >= npressures) {
-		rc_atomic_abort(&out);
-		tool_fail(&t, "--resume %s: every pressure of it is done; nothing "
-		    "to resume", o.resume_path);
+	if (o->resume_path != NULL && r->first >= r->npressures) {
+		rc_atomic_abort(&r->out);
+		tool_fail(&r->t, "--resume %s: every pressure of it is done; nothing "
+		    "to resume", o->resume_path);
 	}
-	if (o.ck_every > 0) {
+	if (o->ck_every > 0) {
 		struct sigaction alarm_sa;
 
 		memset(&alarm_sa, 0, sizeof(alarm_sa));
@@ -466,283 +524,373 @@ main(int argc, char **argv)
 		alarm_sa.sa_flags = SA_RESTART;
 		sigemptyset(&alarm_sa.sa_mask);
 		sigaction(SIGALRM, &alarm_sa, NULL);
-		arm_timer(o.ck_every);
+		arm_timer(o->ck_every);
 	}
-	for (size_t k = first; k < npressures; k++) {
-		rc_solve_result res;
-		rc_contact_stats st;
-		double p = o.napproach ? NAN : o.nreduced ?
-		    o.reduced[k] * o.modulus * gbar : o.absolute[k];
-		/* Echo a requested p* exactly: p/(E* gbar) rounds. */
-		double p_star = o.nreduced ? o.reduced[k] :
-		    gbar > 0 ? p / (o.modulus * gbar) : NAN;
-		double seconds = 0;
-		long iterations = k == first ? resumed_iterations : 0;
-		int r;
+}
 
-		pr.p = p;
-		pr.p_star = p_star;
-		/* A periodic checkpoint stops the solve through o.so.stop; it is
-		 * saved and the same pressure goes on from where it stopped. */
-		for (;;) {
-			if (o.napproach) {
-				r = rc_solver_solve_approach(solver, o.approach[k], &p,
-				    &res, &err);
-				p_star = gbar > 0 ? p / (o.modulus * gbar) : NAN;
-			} else
-				r = rc_solver_solve(solver, p, &res, &err);
-			if (pr.shown) {
-				fputc('\n', stderr);
-				pr.shown = 0;
-			}
-			if (r < 0) {
-				rc_atomic_abort(&out);
-				if (o.napproach)
-					tool_fail(&t, "approach %g: %s", o.approach[k], err.msg);
-				tool_fail(&t, "p = %g: %s", p, err.msg);
-			}
-			/* A resumed count plus this piece, saturating. */
-			iterations = rc_checkpoint_iterations_add(iterations,
-			    res.iterations);
-			seconds += res.seconds;
-			if (r == 0 || !stop_flag)
-				break;
-			if (o.ck_path != NULL) {
-				ck.next = k;
-				ck.solving = 1;
-				ck.iterations = iterations;
-				if (rc_checkpoint_write(&ck, rc_solver_displacement(solver),
-				    o.ck_path, &err) != 0) {
-					if (stop_signal) {
-						rc_err werr;
+/* The rows of the pressures finished before a stop are complete: keep
+ * them (none: nothing). */
+static void
+keep_finished_rows(struct run *r, size_t done)
+{
+	rc_err err;
 
-						/* The finished rows are kept all the same. */
-						if (k == 0 || rc_table_end(&table, &werr) != 0 ||
-						    rc_atomic_commit(&out, &werr) != 0)
-							rc_atomic_abort(&out);
-						tool_fail(&t, "interrupted by signal %d while "
-						    "solving p = %g; the checkpoint %s could not be "
-						    "written: %s; the rows of the %zu of %zu "
-						    "pressures done before it are written",
-						    (int)stop_signal, p, o.ck_path, err.msg, k,
-						    npressures);
-					}
-					tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
-					    err.msg);
-				}
-			}
+	if (done == 0 || rc_table_end(&r->table, &err) != 0 ||
+	    rc_atomic_commit(&r->out, &err) != 0)
+		rc_atomic_abort(&r->out);
+}
+
+/* A stop inside pressure k (a signal, or the --checkpoint-every timer):
+ * save the solver's state; on a signal end the run, telling how to
+ * resume it. */
+static void
+stop_inside(struct run *r, size_t k, double p, long iterations)
+{
+	struct gfmd_opts *o = &r->o;
+	const char *stdin_note = r->input == NULL || rc_is_stdio(r->input) ?
+	    " (with the same indenter on standard input)" : "";
+	rc_err err;
+
+	if (o->ck_path != NULL) {
+		r->ck.next = k;
+		r->ck.solving = 1;
+		r->ck.iterations = iterations;
+		if (rc_checkpoint_write(&r->ck, rc_solver_displacement(r->solver),
+		    o->ck_path, &err) != 0) {
 			if (stop_signal) {
-				char *cmd = o.ck_path ? resume_command(argc, argv, o.ck_path) : NULL;
-
-				/* The rows of finished pressures are complete: keep them. */
-				if (k == 0 || rc_table_end(&table, &err) != 0 ||
-				    rc_atomic_commit(&out, &err) != 0)
-					rc_atomic_abort(&out);
-				if (o.ck_path == NULL)
-					tool_fail(&t, "interrupted by signal %d while solving "
-					    "p = %g (iteration %ld); the rows of the %zu of %zu "
-					    "pressures done before it are written, no fields "
-					    "(--checkpoint FILE makes a run resumable)",
-					    (int)stop_signal, p, iterations, k, npressures);
-				tool_fail(&t, "interrupted by signal %d while solving p = %g "
-				    "(pressure %zu of %zu, iteration %ld); state saved in %s; "
-				    "resume with: %s%s", (int)stop_signal, p, k + 1,
-				    npressures, iterations, o.ck_path, cmd ? cmd : "",
-				    input == NULL || rc_is_stdio(input) ?
-				    " (with the same indenter on standard input)" : "");
+				keep_finished_rows(r, k);
+				tool_fail(&r->t, "interrupted by signal %d while "
+				    "solving p = %g; the checkpoint %s could not be "
+				    "written: %s; the rows of the %zu of %zu "
+				    "pressures done before it are written",
+				    (int)stop_signal, p, o->ck_path, err.msg, k,
+				    r->npressures);
 			}
-			stop_flag = 0;
-			if (stop_signal)
-				stop_flag = 1;
-			arm_timer(o.ck_every);
+			tool_warn(&r->t, "checkpoint %s: %s; going on", o->ck_path,
+			    err.msg);
 		}
-		res.iterations = iterations;
-		res.seconds = seconds;
-		co.pressure = p;
-		if (rc_contact_analyse(h, rc_solver_contact(solver), &co, &st,
-		    &err) != 0) {
-			rc_atomic_abort(&out);
-			tool_fail(&t, "p = %g: %s", p, err.msg);
-		}
-		{
-			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
-			    .stats = &st, .mean_gap = rc_solver_mean_gap(solver),
-			    .a_subpixel = o.so.boundary == RC_BOUNDARY_FREE ? NAN :
-			    rc_contact_subpixel(rc_solver_displacement(solver),
-			    h->z, rc_solver_pressure(solver),
-			    rc_solver_contact(solver), h->nx, h->ny, h->lx, h->ly,
-			    o.so.modulus),
-			    .elastic_energy = rc_solver_elastic_energy(solver),
-			    .iterations = res.iterations, .residual = res.residual,
-			    .tol = o.so.tol,
-			    .seconds = res.seconds, .plan_seconds = plan_seconds,
-			    .method = rc_method_name(o.so.method),
-			    .boundary = rc_boundary_name(o.so.boundary),
-			    .kernel = rc_kernel_name(o.so.boundary ==
-			    RC_BOUNDARY_FREE ? RC_KERNEL_PIXEL : o.so.kernel),
-			    .approach = rc_solver_approach(solver), .indenter = h,
-			    .hardness = rc_solver_opts_plastic(&o.so) ?
-			    o.so.hardness : 0,
-			    .a_plastic = rc_solver_plastic_fraction(solver),
-			    .thickness = o.so.thickness,
-			    .substrate = o.so.substrate, .poisson = o.so.poisson,
-			    .nx = h->nx, .ny = h->ny };
+	}
+	if (stop_signal) {
+		char *cmd = o->ck_path ? resume_command(r->argc, r->argv,
+		    o->ck_path) : NULL;
 
-			const char *why = gfmd_kappa_c_why(&in);
+		keep_finished_rows(r, k);
+		if (o->ck_path == NULL)
+			tool_fail(&r->t, "interrupted by signal %d while solving "
+			    "p = %g (iteration %ld); the rows of the %zu of %zu "
+			    "pressures done before it are written, no fields "
+			    "(--checkpoint FILE makes a run resumable)",
+			    (int)stop_signal, p, iterations, k, r->npressures);
+		tool_fail(&r->t, "interrupted by signal %d while solving p = %g "
+		    "(pressure %zu of %zu, iteration %ld); state saved in %s; "
+		    "resume with: %s%s", (int)stop_signal, p, k + 1,
+		    r->npressures, iterations, o->ck_path, cmd ? cmd : "",
+		    stdin_note);
+	}
+	stop_flag = 0;
+	if (stop_signal)
+		stop_flag = 1;
+	arm_timer(o->ck_every);
+}
 
-			if (why != NULL)
-				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
-				    why);
-			if (gfmd_result_row(&row, &in) != 0) {
-				rc_atomic_abort(&out);
-				tool_fail(&t, "out of memory");
-			}
-		}
-		if (rc_table_write(&table, &row, &err) != 0) {
-			rc_atomic_abort(&out);
-			tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
-		}
-		if (fflush(out.fp) != 0) {
-			rc_atomic_abort(&out);
-			tool_fail(&t, "%s: %s", t.out ? t.out : "standard output",
-			    strerror(errno));
-		}
-		if (!res.converged) {
-			nunconverged++;
-			tool_warn(&t, "p = %g: not converged after %ld iterations "
-			    "(residual %.3g, tolerance %.3g); row written, going on",
-			    p, res.iterations, res.residual, o.so.tol);
-		}
-		last_p = p;
-		last_p_star = p_star;
-		if (o.ck_path != NULL && k + 1 < npressures) {
-			/* Saved after each finished pressure: a stop from here
-			 * on loses nothing. */
-			ck.next = k + 1;
-			ck.solving = 0;
-			ck.iterations = 0;
-			if (rc_checkpoint_add_row(&ck, &row, &err) != 0 ||
-			    rc_checkpoint_write(&ck, rc_solver_displacement(solver),
-			    o.ck_path, &err) != 0) {
-				if (stop_signal) {
-					rc_err werr;
+/* Solve pressure k (or approach k): *p, *p_star and *res of the solve,
+ * its iterations and seconds summed over the pieces a checkpoint timer
+ * cut it into. */
+static void
+solve_pressure(struct run *r, size_t k, double *p, double *p_star,
+    rc_solve_result *res)
+{
+	struct gfmd_opts *o = &r->o;
+	double seconds = 0;
+	long iterations = k == r->first ? r->resumed_iterations : 0;
+	rc_err err;
+	int st;
 
-					if (rc_table_end(&table, &werr) != 0 ||
-					    rc_atomic_commit(&out, &werr) != 0)
-						rc_atomic_abort(&out);
-					tool_fail(&t, "interrupted by signal %d after pressure "
-					    "%zu of %zu; the checkpoint %s could not be written: "
-					    "%s; the rows of the pressures done are written",
-					    (int)stop_signal, k + 1, npressures, o.ck_path,
-					    err.msg);
-				}
-				tool_warn(&t, "checkpoint %s: %s; going on", o.ck_path,
+	*p = o->napproach ? NAN : o->nreduced ?
+	    o->reduced[k] * o->modulus * r->gbar : o->absolute[k];
+	/* Echo a requested p* exactly: p/(E* gbar) rounds. */
+	*p_star = o->nreduced ? o->reduced[k] :
+	    r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
+	r->pr.p = *p;
+	r->pr.p_star = *p_star;
+	/* A periodic checkpoint stops the solve through o->so.stop; it is
+	 * saved and the same pressure goes on from where it stopped. */
+	for (;;) {
+		if (o->napproach) {
+			st = rc_solver_solve_approach(r->solver, o->approach[k], p,
+			    res, &err);
+			*p_star = r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
+		} else
+			st = rc_solver_solve(r->solver, *p, res, &err);
+		if (r->pr.shown) {
+			fputc('\n', stderr);
+			r->pr.shown = 0;
+		}
+		if (st < 0) {
+			rc_atomic_abort(&r->out);
+			if (o->napproach)
+				tool_fail(&r->t, "approach %g: %s", o->approach[k],
 				    err.msg);
-			}
-			if (stop_signal) {
-				char *cmd = resume_command(argc, argv, o.ck_path);
+			tool_fail(&r->t, "p = %g: %s", *p, err.msg);
+		}
+		/* A resumed count plus this piece, saturating. */
+		iterations = rc_checkpoint_iterations_add(iterations,
+		    res->iterations);
+		seconds += res->seconds;
+		if (st == 0 || !stop_flag)
+			break;
+		stop_inside(r, k, *p, iterations);
+	}
+	res->iterations = iterations;
+	res->seconds = seconds;
+}
 
-				if (rc_table_end(&table, &err) != 0 ||
-				    rc_atomic_commit(&out, &err) != 0)
-					rc_atomic_abort(&out);
-				tool_fail(&t, "interrupted by signal %d after pressure %zu "
-				    "of %zu; state saved in %s; resume with: %s%s",
-				    (int)stop_signal, k + 1, npressures, o.ck_path,
-				    cmd ? cmd : "", input == NULL || rc_is_stdio(input) ?
-				    " (with the same indenter on standard input)" : "");
-			}
+/* The result row of pressure p, written and flushed. */
+static void
+write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
+{
+	const struct gfmd_opts *o = &r->o;
+	const rc_grid *h = r->h;
+	rc_solver *s = r->solver;
+	rc_contact_stats st;
+	rc_err err;
+
+	r->co.pressure = p;
+	if (rc_contact_analyse(h, rc_solver_contact(s), &r->co, &st, &err) != 0) {
+		rc_atomic_abort(&r->out);
+		tool_fail(&r->t, "p = %g: %s", p, err.msg);
+	}
+	{
+		struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = r->gbar,
+		    .stats = &st, .mean_gap = rc_solver_mean_gap(s),
+		    .a_subpixel = o->so.boundary == RC_BOUNDARY_FREE ? NAN :
+		    rc_contact_subpixel(rc_solver_displacement(s), h->z,
+		    rc_solver_pressure(s), rc_solver_contact(s), h->nx, h->ny,
+		    h->lx, h->ly, o->so.modulus),
+		    .elastic_energy = rc_solver_elastic_energy(s),
+		    .iterations = res->iterations, .residual = res->residual,
+		    .tol = o->so.tol,
+		    .seconds = res->seconds, .plan_seconds = r->plan_seconds,
+		    .method = rc_method_name(o->so.method),
+		    .boundary = rc_boundary_name(o->so.boundary),
+		    .kernel = rc_kernel_name(o->so.boundary ==
+		    RC_BOUNDARY_FREE ? RC_KERNEL_PIXEL : o->so.kernel),
+		    .approach = rc_solver_approach(s), .indenter = h,
+		    .hardness = rc_solver_opts_plastic(&o->so) ?
+		    o->so.hardness : 0,
+		    .a_plastic = rc_solver_plastic_fraction(s),
+		    .thickness = o->so.thickness,
+		    .substrate = o->so.substrate, .poisson = o->so.poisson,
+		    .nx = h->nx, .ny = h->ny };
+		const char *why = gfmd_kappa_c_why(&in);
+
+		if (why != NULL)
+			tool_warn(&r->t, "p = %g: kappa_c written as nan: %s", p, why);
+		if (gfmd_result_row(&r->row, &in) != 0) {
+			rc_atomic_abort(&r->out);
+			tool_fail(&r->t, "out of memory");
 		}
 	}
-	if (o.ck_every > 0) {
+	if (rc_table_write(&r->table, &r->row, &err) != 0) {
+		rc_atomic_abort(&r->out);
+		tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output", err.msg);
+	}
+	if (fflush(r->out.fp) != 0) {
+		rc_atomic_abort(&r->out);
+		tool_fail(&r->t, "%s: %s", r->t.out ? r->t.out : "standard output",
+		    strerror(errno));
+	}
+	if (!res->converged) {
+		r->nunconverged++;
+		tool_warn(&r->t, "p = %g: not converged after %ld iterations "
+		    "(residual %.3g, tolerance %.3g); row written, going on",
+		    p, res->iterations, res->residual, o->so.tol);
+	}
+	r->last_p = p;
+	r->last_p_star = p_star;
+}
+
+/* Saved after each finished pressure but the last: a stop from here on
+ * loses nothing. */
+static void
+checkpoint_after(struct run *r, size_t k)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
+
+	if (o->ck_path == NULL || k + 1 >= r->npressures)
+		return;
+	r->ck.next = k + 1;
+	r->ck.solving = 0;
+	r->ck.iterations = 0;
+	if (rc_checkpoint_add_row(&r->ck, &r->row, &err) != 0 ||
+	    rc_checkpoint_write(&r->ck, rc_solver_displacement(r->solver),
+	    o->ck_path, &err) != 0) {
+		if (stop_signal) {
+			keep_finished_rows(r, k + 1);
+			tool_fail(&r->t, "interrupted by signal %d after pressure "
+			    "%zu of %zu; the checkpoint %s could not be written: "
+			    "%s; the rows of the pressures done are written",
+			    (int)stop_signal, k + 1, r->npressures, o->ck_path,
+			    err.msg);
+		}
+		tool_warn(&r->t, "checkpoint %s: %s; going on", o->ck_path, err.msg);
+	}
+	if (stop_signal) {
+		char *cmd = resume_command(r->argc, r->argv, o->ck_path);
+
+		keep_finished_rows(r, k + 1);
+		tool_fail(&r->t, "interrupted by signal %d after pressure %zu "
+		    "of %zu; state saved in %s; resume with: %s%s",
+		    (int)stop_signal, k + 1, r->npressures, o->ck_path,
+		    cmd ? cmd : "", r->input == NULL || rc_is_stdio(r->input) ?
+		    " (with the same indenter on standard input)" : "");
+	}
+}
+
+/* The table complete: timer off, signals back to removing temporaries,
+ * the output committed. */
+static void
+output_end(struct run *r)
+{
+	rc_err err;
+
+	if (r->o.ck_every > 0) {
 		struct itimerval off;
 
 		memset(&off, 0, sizeof(off));
 		setitimer(ITIMER_REAL, &off, NULL);
 	}
-	rc_row_free(&row);
+	rc_row_free(&r->row);
 	/* From here a signal ends the process, removing the temporary files
 	 * of the fields being written. */
-	sa.sa_handler = tool_on_signal;
-	sigaction(SIGINT, &sa, NULL);
-	sigaction(SIGTERM, &sa, NULL);
-	if (rc_table_end(&table, &err) != 0 || rc_atomic_commit(&out, &err) != 0) {
-		rc_atomic_abort(&out);
-		tool_fail_at(&t, t.out ? t.out : "standard output", err.msg);
+	r->sa.sa_handler = tool_on_signal;
+	sigaction(SIGINT, &r->sa, NULL);
+	sigaction(SIGTERM, &r->sa, NULL);
+	if (rc_table_end(&r->table, &err) != 0 ||
+	    rc_atomic_commit(&r->out, &err) != 0) {
+		rc_atomic_abort(&r->out);
+		tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output", err.msg);
 	}
-	if (!o.fd)
-		rc_fft_free(&fft);
+	if (!r->o.fd)
+		rc_fft_free(&r->fft);
+}
 
-	/* Fields of the last pressure, only those asked for, one at a time. */
-	{
-		const char *method_name = rc_method_name(o.so.method);
-		const double *u = rc_solver_displacement(solver);
-		const double *sigma = rc_solver_pressure(solver);
-		const unsigned char *mask = rc_solver_contact(solver);
-		size_t np = rc_grid_size(h);
-		rc_grid *g;
+/* Fields of the last pressure, only those asked for, one at a time. */
+static void
+write_fields(struct run *r)
+{
+	const struct gfmd_opts *o = &r->o;
+	const rc_grid *h = r->h;
+	const char *method_name = rc_method_name(o->so.method);
+	const double *u = rc_solver_displacement(r->solver);
+	const double *sigma = rc_solver_pressure(r->solver);
+	const unsigned char *mask = rc_solver_contact(r->solver);
+	size_t np = rc_grid_size(h);
+	rc_grid *g;
+	rc_err err;
 
-		if (o.field[GFMD_DISPLACEMENT] != NULL) {
-			g = field_grid(&t, h, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-			    o.modulus, method_name, o.so.boundary);
-			memcpy(g->z, u, np * sizeof(double));
-			tool_write_grid(&t, g, o.field[GFMD_DISPLACEMENT]);
-			rc_grid_free(g);
-		}
-		if (o.field[GFMD_GAP] != NULL) {
-			g = field_grid(&t, h, RC_KIND_GAP, last_p, last_p_star, o.modulus,
-			    method_name, o.so.boundary);
-			for (size_t k = 0; k < np; k++)
-				g->z[k] = u[k] - h->z[k];
-			tool_write_grid(&t, g, o.field[GFMD_GAP]);
-			rc_grid_free(g);
-		}
-		if (o.field[GFMD_PRESSURE] != NULL) {
-			g = field_grid(&t, h, RC_KIND_PRESSURE, last_p, last_p_star,
-			    o.modulus, method_name, o.so.boundary);
-			memcpy(g->z, sigma, np * sizeof(double));
-			tool_write_grid(&t, g, o.field[GFMD_PRESSURE]);
-			rc_grid_free(g);
-		}
-		if (o.field[GFMD_CONTACT] != NULL || t.png != NULL) {
-			g = field_grid(&t, h, RC_KIND_MASK, last_p, last_p_star, o.modulus,
-			    method_name, o.so.boundary);
-			for (size_t k = 0; k < np; k++)
-				g->z[k] = mask[k] != 0;
-			if (o.field[GFMD_CONTACT] != NULL)
-				tool_write_grid(&t, g, o.field[GFMD_CONTACT]);
-			if (t.png != NULL) {
-				rc_png_opts po;
-				char caption[96];
-				size_t n_c = 0;
-
-				for (size_t k = 0; k < np; k++)
-					n_c += mask[k] != 0;
-				/* The last pressure's, as in its row (a_r = n_c/n_tot). */
-				snprintf(caption, sizeof(caption), "p*=%.4g  a_r=%.4g",
-				    last_p_star, (double)n_c / (double)np);
-				rc_png_defaults(&po);
-				po.overlay = g;
-				po.caption = caption;
-				if (rc_png_write(h, t.png, &po, &err) != 0)
-					tool_fail_at(&t, t.png, err.msg);
-			}
-			rc_grid_free(g);
-		}
+	if (o->field[GFMD_DISPLACEMENT] != NULL) {
+		g = field_grid(&r->t, h, RC_KIND_DISPLACEMENT, r->last_p,
+		    r->last_p_star, o->modulus, method_name, o->so.boundary);
+		memcpy(g->z, u, np * sizeof(double));
+		tool_write_grid(&r->t, g, o->field[GFMD_DISPLACEMENT]);
+		rc_grid_free(g);
 	}
-	if (nunconverged) {
-		tool_warn(&t, "%zu of %zu pressures did not converge", nunconverged,
-		    npressures);
+	if (o->field[GFMD_GAP] != NULL) {
+		g = field_grid(&r->t, h, RC_KIND_GAP, r->last_p, r->last_p_star,
+		    o->modulus, method_name, o->so.boundary);
+		for (size_t k = 0; k < np; k++)
+			g->z[k] = u[k] - h->z[k];
+		tool_write_grid(&r->t, g, o->field[GFMD_GAP]);
+		rc_grid_free(g);
+	}
+	if (o->field[GFMD_PRESSURE] != NULL) {
+		g = field_grid(&r->t, h, RC_KIND_PRESSURE, r->last_p,
+		    r->last_p_star, o->modulus, method_name, o->so.boundary);
+		memcpy(g->z, sigma, np * sizeof(double));
+		tool_write_grid(&r->t, g, o->field[GFMD_PRESSURE]);
+		rc_grid_free(g);
+	}
+	if (o->field[GFMD_CONTACT] == NULL && r->t.png == NULL)
+		return;
+	g = field_grid(&r->t, h, RC_KIND_MASK, r->last_p, r->last_p_star,
+	    o->modulus, method_name, o->so.boundary);
+	for (size_t k = 0; k < np; k++)
+		g->z[k] = mask[k] != 0;
+	if (o->field[GFMD_CONTACT] != NULL)
+		tool_write_grid(&r->t, g, o->field[GFMD_CONTACT]);
+	if (r->t.png != NULL) {
+		rc_png_opts po;
+		char caption[96];
+		size_t n_c = 0;
+
+		for (size_t k = 0; k < np; k++)
+			n_c += mask[k] != 0;
+		/* The last pressure's, as in its row (a_r = n_c/n_tot). */
+		snprintf(caption, sizeof(caption), "p*=%.4g  a_r=%.4g",
+		    r->last_p_star, (double)n_c / (double)np);
+		rc_png_defaults(&po);
+		po.overlay = g;
+		po.caption = caption;
+		if (rc_png_write(h, r->t.png, &po, &err) != 0)
+			tool_fail_at(&r->t, r->t.png, err.msg);
+	}
+	rc_grid_free(g);
+}
+
+/* The exit status (1 if a pressure did not converge); the finished run's
+ * checkpoint removed, everything freed. */
+static int
+finish(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
+	int status = 0;
+
+	if (r->nunconverged) {
+		tool_warn(&r->t, "%zu of %zu pressures did not converge",
+		    r->nunconverged, r->npressures);
 		status = 1;
 	}
 	/* The run is complete: its checkpoint would only resume it again. */
-	if (o.ck_path != NULL && rc_atomic_remove(o.ck_path, &err) != 0)
-		tool_warn(&t, "%s", err.msg);
-	if (o.ck_path != NULL || o.resume_path != NULL)
-		rc_checkpoint_free(&ck);
-	if (o.resume_path != NULL)
-		rc_checkpoint_free(&saved);
-	rc_solver_free(solver);
-	rc_grid_free(h);
-	gfmd_opts_free(&o);
-	return tool_exit(&t, status);
+	if (o->ck_path != NULL && rc_atomic_remove(o->ck_path, &err) != 0)
+		tool_warn(&r->t, "%s", err.msg);
+	if (o->ck_path != NULL || o->resume_path != NULL)
+		rc_checkpoint_free(&r->ck);
+	if (o->resume_path != NULL)
+		rc_checkpoint_free(&r->saved);
+	rc_solver_free(r->solver);
+	rc_grid_free(r->h);
+	gfmd_opts_free(o);
+	return tool_exit(&r->t, status);
+}
+
+int
+main(int argc, char **argv)
+{
+	struct run r;
+
+	memset(&r, 0, sizeof(r));
+	if (parse_options(&r, argc, argv))
+		return tool_exit(&r.t, 0);
+	tool_fft_setup(&r.t);
+	r.h = tool_read_input(&r.t, r.input);
+	if (r.o.resume_path != NULL)
+		resume_defaults(&r);
+	checkpoint_setup(&r);
+	indenter_setup(&r);
+	solver_setup(&r);
+	output_begin(&r);
+	for (size_t k = r.first; k < r.npressures; k++) {
+		rc_solve_result res;
+		double p, p_star;
+
+		solve_pressure(&r, k, &p, &p_star, &res);
+		write_row(&r, p, p_star, &res);
+		checkpoint_after(&r, k);
+	}
+	output_end(&r);
+	write_fields(&r);
+	return finish(&r);
 }
