@@ -555,270 +555,318 @@ gnuplot_script(const struct tool *t, const char *path, const rc_grid *g,
 	}
 }
 
+/* surfstat's options: one struct, parsed, then checked together. */
+struct stat_opts {
+	const char *mask_path, *psd2d, *gp, *in;
+	enum table table;
+	enum rc_deriv_method method;
+	enum rc_window window;
+	enum rc_psd1d_dir dir1d;
+	int ntables, acf_half, have_window, have_s, list;
+	size_t nbins, nmr;
+	double bpd, acf_s, min_wl, max_wl;
+};
+
+/* A table option: the table, counted (one per run). */
+static void
+choose_table(struct stat_opts *so, enum table table)
+{
+	so->table = table;
+	so->ntables++;
+}
+
+/* One option c of getopt_long. */
+static void
+stat_option(struct tool *t, struct stat_opts *so, int c, const char *arg,
+    char **argv)
+{
+	long v;
+
+	switch (c) {
+	case OPT_MASK:
+		so->mask_path = arg;
+		break;
+	case OPT_PSD:
+		choose_table(so, T_PSD);
+		break;
+	case OPT_ACF:
+		choose_table(so, T_ACF);
+		break;
+	case OPT_BY_HEIGHT:
+		choose_table(so, T_BY_HEIGHT);
+		if (tool_long(t, "--by-height", arg, &v) == 0) {
+			if (v < 1 || v > 1000000)
+				tool_bad(t, "--by-height %s: want 1 to 1000000 bins", arg);
+			else
+				so->nbins = (size_t)v;
+		}
+		break;
+	case OPT_PSD2D:
+		so->psd2d = arg;
+		break;
+	case OPT_PSD1D:
+		choose_table(so, T_PSD1D);
+		if (strcmp(arg, "x") == 0)
+			so->dir1d = RC_PSD1D_X;
+		else if (strcmp(arg, "y") == 0)
+			so->dir1d = RC_PSD1D_Y;
+		else
+			tool_bad(t, "--psd1d %s: want x or y", arg);
+		break;
+	case OPT_ISO:
+		choose_table(so, T_ISO);
+		break;
+	case OPT_FIT:
+		choose_table(so, T_FIT);
+		break;
+	case OPT_MATERIAL_RATIO:
+		choose_table(so, T_MR);
+		if (tool_long(t, "--material-ratio", arg, &v) == 0) {
+			if (v < 2 || v > 1000000)
+				tool_bad(t, "--material-ratio %s: want 2 to 1000000 "
+				    "heights", arg);
+			else
+				so->nmr = (size_t)v;
+		}
+		break;
+	case OPT_WINDOW: {
+		int w = rc_window_parse(arg);
+
+		so->have_window = 1;
+		if (w < 0)
+			tool_bad(t, "--window %s: want none, hann, blackman or tukey",
+			    arg);
+		else
+			so->window = (enum rc_window)w;
+		break;
+	}
+	case OPT_ACF_HALF:
+		so->acf_half = 1;
+		break;
+	case OPT_ACF_THRESHOLD:
+		so->have_s = 1;
+		if (tool_double(t, "--acf-threshold", arg, &so->acf_s) == 0 &&
+		    !(so->acf_s > 0 && so->acf_s < 1))
+			tool_bad(t, "--acf-threshold %s: want 0 < S < 1", arg);
+		break;
+	case OPT_MIN_WAVELENGTH:
+		if (tool_double(t, "--min-wavelength", arg, &so->min_wl) == 0 &&
+		    !(so->min_wl > 0 && isfinite(so->min_wl)))
+			tool_bad(t, "--min-wavelength %s: must be positive", arg);
+		break;
+	case OPT_MAX_WAVELENGTH:
+		if (tool_double(t, "--max-wavelength", arg, &so->max_wl) == 0 &&
+		    !(so->max_wl > 0 && isfinite(so->max_wl)))
+			tool_bad(t, "--max-wavelength %s: must be positive", arg);
+		break;
+	case OPT_GNUPLOT:
+		so->gp = arg;
+		break;
+	case OPT_FD:
+		so->method = RC_DERIV_FD;
+		break;
+	case OPT_CHANNELS:
+		so->list = 1;
+		break;
+	case OPT_BINS:
+		if (tool_double(t, "--bins-per-decade", arg, &so->bpd) == 0 &&
+		    !(so->bpd >= 1 && so->bpd <= 1000))
+			tool_bad(t, "--bins-per-decade %s: want 1 to 1000", arg);
+		break;
+	default:
+		tool_bad_option(t, "ho:j:qL:", longopts, argv);
+	}
+}
+
+/* The checks between options, the operand, and the run's files. */
+static void
+stat_opts_check(struct tool *t, struct stat_opts *so, int argc, char **argv)
+{
+	enum table table = so->table;
+
+	if (optind < argc)
+		so->in = argv[optind++];
+	if (optind < argc)
+		tool_bad(t, "%s: unexpected argument (one input file)", argv[optind]);
+	if (so->ntables > 1)
+		tool_bad(t, "--psd, --psd1d, --acf, --by-height, --iso, "
+		    "--material-ratio, --fit: choose one table per run");
+	if (so->mask_path != NULL && table != T_SCALARS && table != T_BY_HEIGHT)
+		tool_bad(t, "--mask: applies to the scalar row and --by-height, "
+		    "not to spectra, the ACF, --iso, --material-ratio or --fit");
+	if (so->method == RC_DERIV_FD && table != T_SCALARS && table != T_BY_HEIGHT)
+		tool_bad(t, "--fd: applies to the scalar row and --by-height only");
+	if (so->have_window && table != T_PSD && table != T_PSD1D &&
+	    table != T_FIT && so->psd2d == NULL && so->gp == NULL)
+		tool_bad(t, "--window: applies to --psd, --psd1d, --psd2d, --gnuplot "
+		    "and --fit");
+	if (so->acf_half && table != T_ACF)
+		tool_bad(t, "--acf-half: only with --acf");
+	if (so->have_s && table != T_ISO)
+		tool_bad(t, "--acf-threshold: only with --iso");
+	if ((so->min_wl > 0 || so->max_wl > 0) && table != T_FIT)
+		tool_bad(t, "--min-wavelength, --max-wavelength: only with --fit");
+	if (so->min_wl > 0 && so->max_wl > 0 && !(so->min_wl < so->max_wl))
+		tool_bad(t, "--min-wavelength %g, --max-wavelength %g: need min < max",
+		    so->min_wl, so->max_wl);
+	if (so->psd2d != NULL)
+		tool_check_grid_path(t, "--psd2d", so->psd2d);
+	tool_output(t, "-o", t->out ? t->out : "-", 0);
+	tool_output(t, "--psd2d", so->psd2d, 0);
+	tool_output(t, "--gnuplot", so->gp, 0);
+	tool_output(t, "--png", t->png, 1);
+	tool_input(t, "the input", so->in);
+	if (so->mask_path != NULL)
+		tool_input(t, "--mask", so->mask_path);
+	tool_usage_check(t);
+}
+
+/* What a grid allows: a profile's spectrum is 1D; missing points only
+ * for --iso and --material-ratio. */
+static void
+check_grid(const struct tool *t, struct stat_opts *so, const rc_grid *g)
+{
+	const char *name = so->in ? so->in : "standard input";
+	/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D C(q)
+	 * would scale with the meaningless strip width. */
+	int profile = (g->nx == 1) != (g->ny == 1);
+
+	if (profile && so->table == T_PSD) {
+		so->table = T_PSD1D;
+		so->dir1d = g->ny == 1 ? RC_PSD1D_X : RC_PSD1D_Y;
+	}
+	if (profile && (so->psd2d != NULL || so->gp != NULL))
+		tool_fail(t, "%s: a %zux%zu profile has no 2D spectrum "
+		    "(--psd2d, --gnuplot); --psd gives its 1D spectrum",
+		    name, g->nx, g->ny);
+	if (g->valid != NULL && so->table != T_ISO && so->table != T_MR)
+		tool_fail(t, "%s: the grid has missing points; --iso and "
+		    "--material-ratio use the valid ones, everything else "
+		    "needs them filled (surfwarp --fill)", name);
+}
+
+/* The statistics of g that the options ask for, written. */
+static void
+run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
+    const rc_grid *mask)
+{
+	enum table table = so->table;
+	rc_fit_opts fo;
+	rc_fft fft, *plan;
+	rc_err err;
+
+	rc_fit_opts_default(&fo);
+	fo.window = so->window;
+	fo.bins_per_decade = so->bpd;
+	fo.q_max = so->min_wl > 0 ? 2 * M_PI / so->min_wl : 0;
+	fo.q_min = so->max_wl > 0 ? 2 * M_PI / so->max_wl : 0;
+	/* One plan for every transform of the run (a handful: the scalars
+	 * take nine), made after the mask so that planning never waits on
+	 * input that turns out bad. */
+	memset(&fft, 0, sizeof(fft));
+	if (table != T_PSD1D && table != T_ISO && table != T_MR &&
+	    (table != T_BY_HEIGHT || so->method == RC_DERIV_SPECTRAL ||
+	    so->psd2d != NULL || so->gp != NULL) && rc_fft_init(&fft, g->nx,
+	    g->ny, tool_fft_effort(t, g->nx, g->ny, 5), &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	plan = fft.nx ? &fft : NULL;
+	tool_fft_finish(t);
+	if (!t->quiet && plan && fft.effort != RC_FFT_ESTIMATE && table != T_SCALARS)
+		tool_warn(t, "FFT plan %zux%zu (%s): %.3g s", g->nx, g->ny,
+		    rc_fft_effort_name(fft.effort), fft.plan_seconds);
+	if (so->psd2d != NULL) {
+		rc_grid *s = rc_psd2d_window(g, plan, so->window, &err);
+
+		if (s == NULL)
+			tool_fail(t, "%s", err.msg);
+		tool_write_grid(t, s, so->psd2d);
+		rc_grid_free(s);
+	}
+	if (table == T_PSD || so->gp != NULL) {
+		rc_psd_bin *b;
+		size_t nb;
+
+		if (rc_psd_radial_window(g, plan, so->bpd, so->window, &b, &nb,
+		    &err) != 0)
+			tool_fail(t, "%s", err.msg);
+		if (so->gp != NULL)
+			gnuplot_script(t, so->gp, g, b, nb);
+		if (table == T_PSD)
+			psd_table(t, b, nb);
+		free(b);
+	}
+	switch (table) {
+	case T_SCALARS:
+		scalars(t, g, mask, so->method, plan);
+		break;
+	case T_ACF:
+		acf_table(t, g, plan, so->acf_half);
+		break;
+	case T_PSD1D:
+		psd1d_table(t, g, so->dir1d, so->window);
+		break;
+	case T_ISO:
+		iso_row(t, g, so->acf_s);
+		break;
+	case T_MR:
+		mr_table(t, g, so->nmr);
+		break;
+	case T_FIT:
+		fit_row(t, g, plan, &fo);
+		break;
+	case T_BY_HEIGHT:
+		height_table(t, g, mask, so->method, plan, so->nbins);
+		break;
+	case T_PSD:
+		break;
+	}
+	rc_fft_free(&fft);
+}
+
 int
 main(int argc, char **argv)
 {
 	struct tool t;
-	const char *mask_path = NULL, *psd2d = NULL, *gp = NULL, *in = NULL;
-	enum table table = T_SCALARS;
-	enum rc_deriv_method method = RC_DERIV_SPECTRAL;
-	enum rc_window window = RC_WINDOW_AUTO;
-	enum rc_psd1d_dir dir1d = RC_PSD1D_X;
-	int ntables = 0, opt, acf_half = 0, have_window = 0, have_s = 0, list = 0;
-	size_t nbins = 0, nmr = 0;
-	double bpd = 10, acf_s = 0.2, min_wl = 0, max_wl = 0;
-	rc_fit_opts fo;
-	long v;
+	struct stat_opts so = { .table = T_SCALARS, .method = RC_DERIV_SPECTRAL,
+	    .window = RC_WINDOW_AUTO, .dir1d = RC_PSD1D_X, .bpd = 10,
+	    .acf_s = 0.2 };
 	rc_grid *g, *mask = NULL;
-	rc_fft fft, *plan;
 	rc_err err;
+	int opt;
 
 	tool_init(&t, "surfstat", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "ho:j:qL:", longopts, NULL)) != -1) {
 		if (tool_common_option(&t, opt, optarg))
 			continue;
-		switch (opt) {
-		case 'h':
+		if (opt == 'h') {
 			usage();
 			return tool_exit(&t, 0);
-		case OPT_MASK:
-			mask_path = optarg;
-			break;
-		case OPT_PSD:
-			table = T_PSD;
-			ntables++;
-			break;
-		case OPT_ACF:
-			table = T_ACF;
-			ntables++;
-			break;
-		case OPT_BY_HEIGHT:
-			table = T_BY_HEIGHT;
-			ntables++;
-			if (tool_long(&t, "--by-height", optarg, &v) == 0) {
-				if (v < 1 || v > 1000000)
-					tool_bad(&t, "--by-height %s: want 1 to 1000000 bins",
-					    optarg);
-				else
-					nbins = (size_t)v;
-			}
-			break;
-		case OPT_PSD2D:
-			psd2d = optarg;
-			break;
-		case OPT_PSD1D:
-			table = T_PSD1D;
-			ntables++;
-			if (strcmp(optarg, "x") == 0)
-				dir1d = RC_PSD1D_X;
-			else if (strcmp(optarg, "y") == 0)
-				dir1d = RC_PSD1D_Y;
-			else
-				tool_bad(&t, "--psd1d %s: want x or y", optarg);
-			break;
-		case OPT_ISO:
-			table = T_ISO;
-			ntables++;
-			break;
-		case OPT_FIT:
-			table = T_FIT;
-			ntables++;
-			break;
-		case OPT_MATERIAL_RATIO:
-			table = T_MR;
-			ntables++;
-			if (tool_long(&t, "--material-ratio", optarg, &v) == 0) {
-				if (v < 2 || v > 1000000)
-					tool_bad(&t, "--material-ratio %s: want 2 to 1000000 "
-					    "heights", optarg);
-				else
-					nmr = (size_t)v;
-			}
-			break;
-		case OPT_WINDOW: {
-			int w = rc_window_parse(optarg);
-			have_window = 1;
-			if (w < 0)
-				tool_bad(&t, "--window %s: want none, hann, blackman or tukey",
-				    optarg);
-			else
-				window = (enum rc_window)w;
-			break;
 		}
-		case OPT_ACF_HALF:
-			acf_half = 1;
-			break;
-		case OPT_ACF_THRESHOLD:
-			have_s = 1;
-			if (tool_double(&t, "--acf-threshold", optarg, &acf_s) == 0 &&
-			    !(acf_s > 0 && acf_s < 1))
-				tool_bad(&t, "--acf-threshold %s: want 0 < S < 1", optarg);
-			break;
-		case OPT_MIN_WAVELENGTH:
-			if (tool_double(&t, "--min-wavelength", optarg, &min_wl) == 0 &&
-			    !(min_wl > 0 && isfinite(min_wl)))
-				tool_bad(&t, "--min-wavelength %s: must be positive", optarg);
-			break;
-		case OPT_MAX_WAVELENGTH:
-			if (tool_double(&t, "--max-wavelength", optarg, &max_wl) == 0 &&
-			    !(max_wl > 0 && isfinite(max_wl)))
-				tool_bad(&t, "--max-wavelength %s: must be positive", optarg);
-			break;
-		case OPT_GNUPLOT:
-			gp = optarg;
-			break;
-		case OPT_FD:
-			method = RC_DERIV_FD;
-			break;
-		case OPT_CHANNELS:
-			list = 1;
-			break;
-		case OPT_BINS:
-			if (tool_double(&t, "--bins-per-decade", optarg, &bpd) == 0 &&
-			    !(bpd >= 1 && bpd <= 1000))
-				tool_bad(&t, "--bins-per-decade %s: want 1 to 1000", optarg);
-			break;
-		default:
-			tool_bad_option(&t, "ho:j:qL:", longopts, argv);
-		}
+		stat_option(&t, &so, opt, optarg, argv);
 	}
-	if (optind < argc)
-		in = argv[optind++];
-	if (optind < argc)
-		tool_bad(&t, "%s: unexpected argument (one input file)", argv[optind]);
-	if (ntables > 1)
-		tool_bad(&t, "--psd, --psd1d, --acf, --by-height, --iso, "
-		    "--material-ratio, --fit: choose one table per run");
-	if (mask_path != NULL && table != T_SCALARS && table != T_BY_HEIGHT)
-		tool_bad(&t, "--mask: applies to the scalar row and --by-height, "
-		    "not to spectra, the ACF, --iso, --material-ratio or --fit");
-	if (method == RC_DERIV_FD && table != T_SCALARS && table != T_BY_HEIGHT)
-		tool_bad(&t, "--fd: applies to the scalar row and --by-height only");
-	if (have_window && table != T_PSD && table != T_PSD1D && table != T_FIT &&
-	    psd2d == NULL && gp == NULL)
-		tool_bad(&t, "--window: applies to --psd, --psd1d, --psd2d, --gnuplot "
-		    "and --fit");
-	if (acf_half && table != T_ACF)
-		tool_bad(&t, "--acf-half: only with --acf");
-	if (have_s && table != T_ISO)
-		tool_bad(&t, "--acf-threshold: only with --iso");
-	if ((min_wl > 0 || max_wl > 0) && table != T_FIT)
-		tool_bad(&t, "--min-wavelength, --max-wavelength: only with --fit");
-	if (min_wl > 0 && max_wl > 0 && !(min_wl < max_wl))
-		tool_bad(&t, "--min-wavelength %g, --max-wavelength %g: need min < max",
-		    min_wl, max_wl);
-	if (psd2d != NULL)
-		tool_check_grid_path(&t, "--psd2d", psd2d);
-	tool_output(&t, "-o", t.out ? t.out : "-", 0);
-	tool_output(&t, "--psd2d", psd2d, 0);
-	tool_output(&t, "--gnuplot", gp, 0);
-	tool_output(&t, "--png", t.png, 1);
-	tool_input(&t, "the input", in);
-	if (mask_path != NULL)
-		tool_input(&t, "--mask", mask_path);
-	tool_usage_check(&t);
-	if (list)
-		tool_list_channels(&t, in);
-
+	stat_opts_check(&t, &so, argc, argv);
+	if (so.list)
+		tool_list_channels(&t, so.in);
 	tool_fft_setup(&t);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
-	rc_fit_opts_default(&fo);
-	fo.window = window;
-	fo.bins_per_decade = bpd;
-	fo.q_max = min_wl > 0 ? 2 * M_PI / min_wl : 0;
-	fo.q_min = max_wl > 0 ? 2 * M_PI / max_wl : 0;
 	/* only --iso and --material-ratio use the valid points alone */
-	t.accept_missing = table == T_ISO || table == T_MR;
-	g = tool_read_input(&t, in);
-	{
-		/* A profile (nx x 1 or 1 x ny) has a 1D spectrum only: a 2D
-		 * C(q) would scale with the meaningless strip width. */
-		int profile = (g->nx == 1) != (g->ny == 1);
-		if (profile && table == T_PSD) {
-			table = T_PSD1D;
-			dir1d = g->ny == 1 ? RC_PSD1D_X : RC_PSD1D_Y;
-		}
-		if (profile && (psd2d != NULL || gp != NULL))
-			tool_fail(&t, "%s: a %zux%zu profile has no 2D spectrum "
-			    "(--psd2d, --gnuplot); --psd gives its 1D spectrum",
-			    in ? in : "standard input", g->nx, g->ny);
-		if (g->valid != NULL && table != T_ISO && table != T_MR)
-			tool_fail(&t, "%s: the grid has missing points; --iso and "
-			    "--material-ratio use the valid ones, everything else "
-			    "needs them filled (surfwarp --fill)",
-			    in ? in : "standard input");
-	}
+	t.accept_missing = so.table == T_ISO || so.table == T_MR;
+	g = tool_read_input(&t, so.in);
+	check_grid(&t, &so, g);
 	/* Windowed spectra, the zero-padded ACF, --iso and --fit treat a
 	 * finite patch as one; the scalar row's spectral derivatives and
 	 * --by-height do not. */
-	if (g->periodic || table == T_SCALARS || table == T_BY_HEIGHT)
-		tool_check_wrap(&t, g, in);
-	if (mask_path != NULL) {
-		mask = tool_read_grid(&t, mask_path);
+	if (g->periodic || so.table == T_SCALARS || so.table == T_BY_HEIGHT)
+		tool_check_wrap(&t, g, so.in);
+	if (so.mask_path != NULL) {
+		mask = tool_read_grid(&t, so.mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)
-			tool_fail_at(&t, mask_path, err.msg);
+			tool_fail_at(&t, so.mask_path, err.msg);
 	}
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail_at(&t, t.png, err.msg);
-	/* One plan for every transform of the run (a handful: the scalars
-	 * take nine), made after the mask so that planning never waits on
-	 * input that turns out bad. */
-	memset(&fft, 0, sizeof(fft));
-	if (table != T_PSD1D && table != T_ISO && table != T_MR &&
-	    (table != T_BY_HEIGHT || method == RC_DERIV_SPECTRAL || psd2d != NULL ||
-	    gp != NULL) && rc_fft_init(&fft, g->nx, g->ny,
-	    tool_fft_effort(&t, g->nx, g->ny, 5), &err) != 0)
-		tool_fail(&t, "%s", err.msg);
-	plan = fft.nx ? &fft : NULL;
-	tool_fft_finish(&t);
-	if (!t.quiet && plan && fft.effort != RC_FFT_ESTIMATE && table != T_SCALARS)
-		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s", g->nx, g->ny,
-		    rc_fft_effort_name(fft.effort), fft.plan_seconds);
-	if (psd2d != NULL) {
-		rc_grid *s = rc_psd2d_window(g, plan, window, &err);
-		if (s == NULL)
-			tool_fail(&t, "%s", err.msg);
-		tool_write_grid(&t, s, psd2d);
-		rc_grid_free(s);
-	}
-	if (table == T_PSD || gp != NULL) {
-		rc_psd_bin *b;
-		size_t nb;
-		if (rc_psd_radial_window(g, plan, bpd, window, &b, &nb, &err) != 0)
-			tool_fail(&t, "%s", err.msg);
-		if (gp != NULL)
-			gnuplot_script(&t, gp, g, b, nb);
-		if (table == T_PSD)
-			psd_table(&t, b, nb);
-		free(b);
-	}
-	switch (table) {
-	case T_SCALARS:
-		scalars(&t, g, mask, method, plan);
-		break;
-	case T_ACF:
-		acf_table(&t, g, plan, acf_half);
-		break;
-	case T_PSD1D:
-		psd1d_table(&t, g, dir1d, window);
-		break;
-	case T_ISO:
-		iso_row(&t, g, acf_s);
-		break;
-	case T_MR:
-		mr_table(&t, g, nmr);
-		break;
-	case T_FIT:
-		fit_row(&t, g, plan, &fo);
-		break;
-	case T_BY_HEIGHT:
-		height_table(&t, g, mask, method, plan, nbins);
-		break;
-	case T_PSD:
-		break;
-	}
-	rc_fft_free(&fft);
+	run_stats(&t, &so, g, mask);
 	rc_grid_free(mask);
 	rc_grid_free(g);
 	return tool_exit(&t, 0);
