@@ -192,187 +192,232 @@ apply(const struct tool *t, rc_grid *g, const struct step *st,
 	return n;
 }
 
+/* surfwarp's options: one struct, parsed, then checked together. */
+struct warp_opts {
+	const char *in, *carve_mask, *filled_mask;
+	double w, hmin, hmax, rmsg, depth, width, rough;
+	long carve_seed;
+	int have_w, have_hmin, have_hmax, flip, have_rough_opts, have_fill;
+	struct step steps[MAX_STEPS];	/* levelling, in command-line order */
+	size_t nsteps;
+};
+
+/* A levelling step (--detrend ... --transpose), in order. */
+static void
+add_step(struct tool *t, struct warp_opts *wo, int opt, const char *arg)
+{
+	struct step st;
+
+	memset(&st, 0, sizeof(st));
+	st.op = opt;
+	if (wo->nsteps == MAX_STEPS) {
+		tool_bad(t, "more than %d levelling steps", MAX_STEPS);
+		return;
+	}
+	if (opt == OPT_DETREND && (st.mode = rc_detrend_parse(arg)) < 0)
+		tool_bad(t, "--detrend %s: want mean, plane or quadratic", arg);
+	if (opt == OPT_ALIGN_ROWS && (st.mode = rc_align_parse(arg)) < 0)
+		tool_bad(t, "--align-rows %s: want median, mean or plane", arg);
+	if (opt == OPT_CROP && parse_crop(t, arg, &st) != 0)
+		return;
+	if (opt == OPT_RESAMPLE)
+		tool_length_pair(t, "--resample", arg, &st.dx, &st.dy);
+	if (opt == OPT_FILL)
+		wo->have_fill = 1;
+	wo->steps[wo->nsteps++] = st;
+}
+
+/* One option c of getopt_long (--carve takes the next word too). */
+static void
+warp_option(struct tool *t, struct warp_opts *wo, int c, const char *arg,
+    int argc, char **argv)
+{
+	switch (c) {
+	case 'w':
+		if (tool_double(t, "-w", arg, &wo->w) == 0)
+			wo->have_w = 1;
+		break;
+	case OPT_HMIN:
+		if (tool_double(t, "--hmin", arg, &wo->hmin) == 0)
+			wo->have_hmin = 1;
+		break;
+	case OPT_HMAX:
+		if (tool_double(t, "--hmax", arg, &wo->hmax) == 0)
+			wo->have_hmax = 1;
+		break;
+	case OPT_FLIP:
+		wo->flip = 1;
+		break;
+	case OPT_RMS_GRADIENT:
+		if (tool_double(t, "--rms-gradient", arg, &wo->rmsg) == 0 &&
+		    !(wo->rmsg > 0))
+			tool_bad(t, "--rms-gradient %s: must be positive", arg);
+		break;
+	case OPT_CARVE:
+		/* Two arguments: MASK here, DEPTH the next word. */
+		wo->carve_mask = arg;
+		if (optind >= argc) {
+			tool_bad(t, "--carve: needs MASK and DEPTH");
+			break;
+		}
+		if (tool_double(t, "--carve DEPTH", argv[optind], &wo->depth) == 0 &&
+		    !(wo->depth >= 0))
+			tool_bad(t, "--carve DEPTH %s: must be >= 0", argv[optind]);
+		optind++;
+		break;
+	case OPT_CARVE_ROUGH:
+		wo->have_rough_opts = 1;
+		if (tool_double(t, "--carve-rough", arg, &wo->rough) == 0 &&
+		    !(wo->rough >= 0))
+			tool_bad(t, "--carve-rough %s: must be >= 0", arg);
+		break;
+	case OPT_CARVE_SEED:
+		wo->have_rough_opts = 1;
+		if (tool_long(t, "--carve-seed", arg, &wo->carve_seed) == 0 &&
+		    wo->carve_seed < 0)
+			tool_bad(t, "--carve-seed %s: must be >= 0", arg);
+		break;
+	case OPT_DETREND:
+	case OPT_ALIGN_ROWS:
+	case OPT_FILL:
+	case OPT_CROP:
+	case OPT_RESAMPLE:
+	case OPT_TRANSPOSE:
+		add_step(t, wo, c, arg);
+		break;
+	case OPT_FILLED_MASK:
+		wo->filled_mask = arg;
+		break;
+	case OPT_CARVE_WIDTH:
+		if (tool_double(t, "--carve-width", arg, &wo->width) == 0 &&
+		    !(wo->width > 0))
+			tool_bad(t, "--carve-width %s: must be positive", arg);
+		break;
+	default:
+		tool_bad_option(t, "hw:o:j:qL:", longopts, argv);
+	}
+}
+
+/* The checks between options, the operand, and the run's files. */
+static void
+warp_opts_check(struct tool *t, struct warp_opts *wo, int argc, char **argv)
+{
+	if (optind < argc)
+		wo->in = argv[optind++];
+	if (optind < argc)
+		tool_bad(t, "%s: unexpected argument (one input file)", argv[optind]);
+	if ((wo->have_hmin || wo->have_hmax) && !wo->have_w)
+		tool_bad(t, "--hmin, --hmax: only with -w");
+	if (wo->width > 0 && wo->carve_mask == NULL)
+		tool_bad(t, "--carve-width: only with --carve");
+	if (wo->have_rough_opts && wo->carve_mask == NULL)
+		tool_bad(t, "--carve-rough, --carve-seed: only with --carve");
+	if (wo->have_hmin && wo->have_hmax && !(wo->hmin < wo->hmax))
+		tool_bad(t, "--hmin %g, --hmax %g: need hmin < hmax", wo->hmin,
+		    wo->hmax);
+	if (wo->filled_mask != NULL && !wo->have_fill)
+		tool_bad(t, "--filled-mask: only with --fill");
+	tool_check_grid_path(t, "-o", t->out);
+	if (wo->filled_mask != NULL)
+		tool_check_grid_path(t, "--filled-mask", wo->filled_mask);
+	tool_output(t, "-o", t->out ? t->out : "-", 0);
+	tool_output(t, "--filled-mask", wo->filled_mask, 0);
+	tool_output(t, "--png", t->png, 1);
+	/* -o may be the input (written atomically after reading it), not the
+	 * mask; the preview is never either. */
+	tool_input(t, "the input", wo->in);
+	if (wo->carve_mask != NULL)
+		tool_input(t, "--carve", wo->carve_mask);
+	tool_may_replace(t, "-o", "the input");
+	tool_usage_check(t);
+}
+
+/* The levelling steps in order, then -w, --flip, --carve and the
+ * renormalisation; returns the grid (a step may replace it). */
+static rc_grid *
+warp_run(struct tool *t, struct warp_opts *wo, rc_grid *g)
+{
+	rc_err err;
+
+	for (size_t k = 0; k < wo->nsteps; k++) {
+		const struct step *st = &wo->steps[k];
+
+		g = apply(t, g, st, wo->filled_mask);
+		/* Levelling, cropping and resampling change the heights'
+		 * statistics: the generation target no longer holds. */
+		if (st->op != OPT_TRANSPOSE && st->op != OPT_FILL &&
+		    !(st->op == OPT_DETREND && st->mode == RC_DETREND_MEAN)) {
+			rc_grid_meta_unset(g, "rms_gradient");
+			rc_grid_meta_unset(g, "rms_height");
+		}
+	}
+	if (g->valid != NULL && (wo->have_w || wo->flip ||
+	    wo->carve_mask != NULL || wo->rmsg > 0))
+		tool_fail(t, "%s: the grid has missing points; -w, --flip, --carve "
+		    "and --rms-gradient need every point (add --fill first)",
+		    wo->in ? wo->in : "standard input");
+	if (wo->have_w) {
+		double dmin, dmax;
+
+		rc_warp_default_bounds(g, &dmin, &dmax);
+		if (!wo->have_hmin)
+			wo->hmin = dmin;
+		if (!wo->have_hmax)
+			wo->hmax = dmax;
+		if (rc_warp(g, wo->w, wo->hmin, wo->hmax, &err) != 0)
+			tool_fail(t, "%s", err.msg);
+	}
+	if (wo->flip && rc_flip(g, &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	if (wo->carve_mask != NULL) {
+		rc_grid *mask = tool_read_grid(t, wo->carve_mask);
+
+		if (wo->width == 0)
+			wo->width = 4 * fmax(g->lx / (double)g->nx,
+			    g->ly / (double)g->ny);
+		if (rc_carve_rough(g, mask, wo->depth, wo->width, wo->rough,
+		    (unsigned long)wo->carve_seed, &err) != 0)
+			tool_fail_at(t, wo->carve_mask, err.msg);
+		rc_grid_free(mask);
+	}
+	if (wo->rmsg > 0) {
+		if (rc_scale_rms_gradient(g, wo->rmsg, &err) != 0)
+			tool_fail(t, "%s", err.msg);
+	} else if (wo->have_w || wo->carve_mask != NULL)
+		/* The generation target no longer describes the heights. */
+		rc_grid_meta_unset(g, "rms_gradient");
+	return g;
+}
+
 int
 main(int argc, char **argv)
 {
 	struct tool t;
-	const char *in = NULL, *carve_mask = NULL;
-	double w = 0, hmin = 0, hmax = 0, rmsg = 0, depth = 0, width = 0, rough = 0;
-	long carve_seed = 1;
-	int have_rough_opts = 0, have_fill = 0;
-	struct step steps[MAX_STEPS];
-	size_t nsteps = 0;
-	const char *filled_mask = NULL;
-	int have_w = 0, have_hmin = 0, have_hmax = 0, flip = 0, opt;
+	struct warp_opts wo;
 	rc_grid *g;
 	rc_err err;
+	int opt;
 
+	memset(&wo, 0, sizeof(wo));
+	wo.carve_seed = 1;
 	tool_init(&t, "surfwarp", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "hw:o:j:qL:", longopts, NULL)) != -1) {
 		if (tool_common_option(&t, opt, optarg))
 			continue;
-		switch (opt) {
-		case 'h':
+		if (opt == 'h') {
 			usage();
 			return tool_exit(&t, 0);
-		case 'w':
-			if (tool_double(&t, "-w", optarg, &w) == 0)
-				have_w = 1;
-			break;
-		case OPT_HMIN:
-			if (tool_double(&t, "--hmin", optarg, &hmin) == 0)
-				have_hmin = 1;
-			break;
-		case OPT_HMAX:
-			if (tool_double(&t, "--hmax", optarg, &hmax) == 0)
-				have_hmax = 1;
-			break;
-		case OPT_FLIP:
-			flip = 1;
-			break;
-		case OPT_RMS_GRADIENT:
-			if (tool_double(&t, "--rms-gradient", optarg, &rmsg) == 0 &&
-			    !(rmsg > 0))
-				tool_bad(&t, "--rms-gradient %s: must be positive", optarg);
-			break;
-		case OPT_CARVE:
-			/* Two arguments: MASK here, DEPTH the next word. */
-			carve_mask = optarg;
-			if (optind >= argc) {
-				tool_bad(&t, "--carve: needs MASK and DEPTH");
-				break;
-			}
-			if (tool_double(&t, "--carve DEPTH", argv[optind], &depth) == 0 &&
-			    !(depth >= 0))
-				tool_bad(&t, "--carve DEPTH %s: must be >= 0", argv[optind]);
-			optind++;
-			break;
-		case OPT_CARVE_ROUGH:
-			have_rough_opts = 1;
-			if (tool_double(&t, "--carve-rough", optarg, &rough) == 0 &&
-			    !(rough >= 0))
-				tool_bad(&t, "--carve-rough %s: must be >= 0", optarg);
-			break;
-		case OPT_CARVE_SEED:
-			have_rough_opts = 1;
-			if (tool_long(&t, "--carve-seed", optarg, &carve_seed) == 0 &&
-			    carve_seed < 0)
-				tool_bad(&t, "--carve-seed %s: must be >= 0", optarg);
-			break;
-		case OPT_DETREND:
-		case OPT_ALIGN_ROWS:
-		case OPT_FILL:
-		case OPT_CROP:
-		case OPT_RESAMPLE:
-		case OPT_TRANSPOSE: {
-			struct step st;
-			memset(&st, 0, sizeof(st));
-			st.op = opt;
-			if (nsteps == MAX_STEPS) {
-				tool_bad(&t, "more than %d levelling steps", MAX_STEPS);
-				break;
-			}
-			if (opt == OPT_DETREND && (st.mode = rc_detrend_parse(optarg)) < 0)
-				tool_bad(&t, "--detrend %s: want mean, plane or quadratic", optarg);
-			if (opt == OPT_ALIGN_ROWS && (st.mode = rc_align_parse(optarg)) < 0)
-				tool_bad(&t, "--align-rows %s: want median, mean or plane", optarg);
-			if (opt == OPT_CROP && parse_crop(&t, optarg, &st) != 0)
-				break;
-			if (opt == OPT_RESAMPLE)
-				tool_length_pair(&t, "--resample", optarg, &st.dx, &st.dy);
-			if (opt == OPT_FILL)
-				have_fill = 1;
-			steps[nsteps++] = st;
-			break;
 		}
-		case OPT_FILLED_MASK:
-			filled_mask = optarg;
-			break;
-		case OPT_CARVE_WIDTH:
-			if (tool_double(&t, "--carve-width", optarg, &width) == 0 &&
-			    !(width > 0))
-				tool_bad(&t, "--carve-width %s: must be positive", optarg);
-			break;
-		default:
-			tool_bad_option(&t, "hw:o:j:qL:", longopts, argv);
-		}
+		warp_option(&t, &wo, opt, optarg, argc, argv);
 	}
-	if (optind < argc)
-		in = argv[optind++];
-	if (optind < argc)
-		tool_bad(&t, "%s: unexpected argument (one input file)", argv[optind]);
-	if ((have_hmin || have_hmax) && !have_w)
-		tool_bad(&t, "--hmin, --hmax: only with -w");
-	if (width > 0 && carve_mask == NULL)
-		tool_bad(&t, "--carve-width: only with --carve");
-	if (have_rough_opts && carve_mask == NULL)
-		tool_bad(&t, "--carve-rough, --carve-seed: only with --carve");
-	if (have_hmin && have_hmax && !(hmin < hmax))
-		tool_bad(&t, "--hmin %g, --hmax %g: need hmin < hmax", hmin, hmax);
-	if (filled_mask != NULL && !have_fill)
-		tool_bad(&t, "--filled-mask: only with --fill");
-	tool_check_grid_path(&t, "-o", t.out);
-	if (filled_mask != NULL)
-		tool_check_grid_path(&t, "--filled-mask", filled_mask);
-	tool_output(&t, "-o", t.out ? t.out : "-", 0);
-	tool_output(&t, "--filled-mask", filled_mask, 0);
-	tool_output(&t, "--png", t.png, 1);
-	/* -o may be the input (written atomically after reading it), not the
-	 * mask; the preview is never either. */
-	tool_input(&t, "the input", in);
-	if (carve_mask != NULL)
-		tool_input(&t, "--carve", carve_mask);
-	tool_may_replace(&t, "-o", "the input");
-	tool_usage_check(&t);
-
+	warp_opts_check(&t, &wo, argc, argv);
 	rc_threads_wait_passively(rc_fft_set_threads(t.threads), t.argv);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
 	/* Levelling steps use the valid points; -w, --flip, --carve and the
-	 * renormalisation are refused below while points are missing. */
+	 * renormalisation are refused while points are missing. */
 	t.accept_missing = 1;
-	g = tool_read_input(&t, in);
-	for (size_t k = 0; k < nsteps; k++) {
-		g = apply(&t, g, &steps[k], filled_mask);
-		/* Levelling, cropping and resampling change the heights'
-		 * statistics: the generation target no longer holds. */
-		if (steps[k].op != OPT_TRANSPOSE && steps[k].op != OPT_FILL &&
-		    !(steps[k].op == OPT_DETREND && steps[k].mode == RC_DETREND_MEAN)) {
-			rc_grid_meta_unset(g, "rms_gradient");
-			rc_grid_meta_unset(g, "rms_height");
-		}
-	}
-	if (g->valid != NULL && (have_w || flip || carve_mask != NULL || rmsg > 0))
-		tool_fail(&t, "%s: the grid has missing points; -w, --flip, --carve "
-		    "and --rms-gradient need every point (add --fill first)",
-		    in ? in : "standard input");
-	if (have_w) {
-		double dmin, dmax;
-		rc_warp_default_bounds(g, &dmin, &dmax);
-		if (!have_hmin)
-			hmin = dmin;
-		if (!have_hmax)
-			hmax = dmax;
-		if (rc_warp(g, w, hmin, hmax, &err) != 0)
-			tool_fail(&t, "%s", err.msg);
-	}
-	if (flip && rc_flip(g, &err) != 0)
-		tool_fail(&t, "%s", err.msg);
-	if (carve_mask != NULL) {
-		rc_grid *mask = tool_read_grid(&t, carve_mask);
-		if (width == 0)
-			width = 4 * fmax(g->lx / (double)g->nx, g->ly / (double)g->ny);
-		if (rc_carve_rough(g, mask, depth, width, rough,
-		    (unsigned long)carve_seed, &err) != 0)
-			tool_fail_at(&t, carve_mask, err.msg);
-		rc_grid_free(mask);
-	}
-	if (rmsg > 0) {
-		if (rc_scale_rms_gradient(g, rmsg, &err) != 0)
-			tool_fail(&t, "%s", err.msg);
-	} else if (have_w || carve_mask != NULL)
-		/* The generation target no longer describes the heights. */
-		rc_grid_meta_unset(g, "rms_gradient");
+	g = warp_run(&t, &wo, tool_read_input(&t, wo.in));
 	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail_at(&t, t.png, err.msg);
 	tool_write_grid(&t, g, t.out);
