@@ -22,7 +22,7 @@
 #include "png.h"
 #include "solver.h"
 #include "spectral.h"
-#include "table.h"
+#include "table_write.h"
 #include "units.h"
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */

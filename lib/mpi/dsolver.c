@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
- * (lib/mpi/dsolver.h); the iteration itself is lib/fire.c. */
+ * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c. */
 #include "mpi/dsolver.h"
 
 #include <math.h>
