@@ -54,7 +54,7 @@ rc_solver_defaults(rc_solver_opts *o)
 	o->modulus = 1;
 	o->tol = 1e-6;
 	o->max_iter = 100000;
-	o->measure = 0;
+	o->fft_effort = RC_FFT_ESTIMATE;
 }
 
 const char *
@@ -170,10 +170,10 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	/* Free boundaries: the padded compliance; FIRE on them also uses
 	 * the periodic stiffness as its inverse mass (solver_fire_free.c). */
 	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
-	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) != 0) ||
+	    s->ly, o->modulus, o->fft_effort, err) != 0) ||
 	    ((!s->free_bc || o->method == RC_METHOD_FIRE) &&
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    (enum rc_fft_effort)o->measure, err) != 0)) {
+	    o->fft_effort, err) != 0)) {
 		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;

@@ -58,8 +58,10 @@ typedef struct rc_solver_opts {
 	double poisson;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
-	int measure;		/* FFT planning effort, an enum rc_fft_effort
-				 * (0: ESTIMATE, 1: MEASURE, ...) */
+	/* FFT planning effort (fft.h); RC_FFT_ESTIMATE by default.  The MPI
+	 * solver (lib/mpi/dsolver.h) plans with FFTW_ESTIMATE for
+	 * RC_FFT_ESTIMATE and with FFTW_MEASURE for any other effort. */
+	enum rc_fft_effort fft_effort;
 	/* Called every few iterations if not NULL (progress on a terminal). */
 	void (*progress)(void *ctx, long iter, double residual, double contact_fraction);
 	void *progress_ctx;

@@ -398,7 +398,7 @@ main(int argc, char **argv)
 		o.so.progress_ctx = &pr;
 	}
 	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
-	o.so.measure = (int)tool_fft_effort(&t, h->nx, h->ny, 1e4);
+	o.so.fft_effort = tool_fft_effort(&t, h->nx, h->ny, 1e4);
 	plan_seconds = rc_clock();
 	if ((solver = rc_solver_new(h, &o.so, &err)) == NULL)
 		tool_fail(&t, "%s", err.msg);

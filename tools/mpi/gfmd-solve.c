@@ -155,8 +155,8 @@ main(int argc, char **argv)
 	o.so.modulus = o.modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
-	o.so.measure = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
-	    RC_FFT_MEASURE;
+	o.so.fft_effort = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
+	    RC_FFT_MEASURE ? RC_FFT_MEASURE : RC_FFT_ESTIMATE;
 	plan_seconds = MPI_Wtime();
 	if ((solver = rc_mpi_solver_new(height, h->nx, ny, h->lx, h->ly, &o.so,
 	    &err)) == NULL)
