@@ -211,20 +211,20 @@ FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 FUZZ_READ_SRC = lib/io.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
-FUZZ_ROWS_SRC = lib/rows.c lib/rc_err.c
+FUZZ_ROWS_SRC = lib/table_read.c lib/rc_err.c
 .PHONY: fuzz
 fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)
 	@sh tests/fuzz/run.sh build/fuzz $(FUZZ_SECONDS) $(BIN)
 build/fuzz/fuzz_read: tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) lib/io.h lib/io_internal.h lib/units.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_read.c $(FUZZ_READ_SRC) $(PKG_LIBS) -lm
-build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/rows.h
+build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/table_read.h
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) -lm
 
 # make MPI=1: also the MPI builds of surfgen and gfmd-solve (lib/mpi/,
 # tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin
-# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/.  lib/fire.c,
+# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/.  lib/solver_fire.c,
 # lib/elastic.c and lib/solver.c are compiled again with -DRC_MPI; the rest
 # of the library is the serial one.  make check-mpi tests them against the
 # serial tools with 1, 2 and 3 ranks (tests/mpi/check.sh).
@@ -232,7 +232,7 @@ MPICC ?= mpicc
 MPI_O = build/mpi
 MPI_BIN = build/mpi/bin
 MPI_TOOLS = $(MPI_BIN)/surfgen $(MPI_BIN)/gfmd-solve
-MPI_LIB_OBJ = $(addprefix $(MPI_O)/lib/,fire.o elastic.o solver.o) \
+MPI_LIB_OBJ = $(addprefix $(MPI_O)/lib/,solver_fire.o elastic.o solver.o) \
 	$(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
 MPI_TOOL_OBJ = $(MPI_O)/tools/mpi/mpitool.o
 .PHONY: check-mpi

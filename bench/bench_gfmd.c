@@ -17,7 +17,7 @@
  * same ratio in process CPU time (the solve's over the pair's), which
  * other processes on the machine disturb far less than the wall time.
  * A third method row, cg-plastic, is CG with the pressure capped at the
- * hardness H = 4 p (gfmd-solve --hardness; lib/pkcg_plastic.c): the cost
+ * hardness H = 4 p (gfmd-solve --hardness; lib/solver_cg_plastic.c): the cost
  * of plasticity against the elastic cg row of the same map (its a_r
  * error is against the elastic reference, so it shows the effect).
  * Two more, fire-layer and cg-layer (periodic only), solve the same map
@@ -28,7 +28,7 @@
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
  * fft_pairs count pairs of the padded 2n x 2n transform (FIRE's unpadded
- * pairs as a quarter each, lib/fire_free.c), pair_seconds is then a
+ * pairs as a quarter each, lib/solver_fire_free.c), pair_seconds is then a
  * padded pair, and the reference is a free FIRE solve at 1e-10.  Free
  * boundaries stop at 1024^2 (a padded 2048^2) unless BENCH_BIG=1.
  *

@@ -30,7 +30,7 @@
 #include <stdint.h>
 #include "grid.h"
 #include "rc_err.h"
-#include "table.h"
+#include "table_write.h"
 
 typedef struct rc_checkpoint {
 	/* identity of the problem */

@@ -12,8 +12,8 @@
 #include <stdio.h>
 #include "extrap.h"
 #include "rc_err.h"
-#include "rows.h"
-#include "table.h"
+#include "table_read.h"
+#include "table_write.h"
 
 /* Eq. 23: the alpha the paper suggests for Eq. 22. */
 #define RC_YASTREBOV_ALPHA_011 0.11

@@ -21,7 +21,7 @@
 #define CHUNK ((size_t)16 << 20)
 
 void
-rc_in_init(rc_in *in, FILE *fp)
+rc__in_init(rc_in *in, FILE *fp)
 {
 	in->fp = fp;
 	in->pos = in->len = 0;
@@ -55,7 +55,7 @@ fill(rc_in *in)
 }
 
 size_t
-rc_in_peek(rc_in *in, size_t n, const unsigned char **p)
+rc__in_peek(rc_in *in, size_t n, const unsigned char **p)
 {
 	if (n > RC_IN_BUFSIZE)
 		n = RC_IN_BUFSIZE;
@@ -66,7 +66,7 @@ rc_in_peek(rc_in *in, size_t n, const unsigned char **p)
 }
 
 int
-rc_in_getc(rc_in *in)
+rc__in_getc(rc_in *in)
 {
 	if (in->pos == in->len) {
 		fill(in);
@@ -78,7 +78,7 @@ rc_in_getc(rc_in *in)
 }
 
 size_t
-rc_in_read(rc_in *in, void *dst, size_t n)
+rc__in_read(rc_in *in, void *dst, size_t n)
 {
 	unsigned char *d = dst;
 	size_t have = in->len - in->pos, done, got;
@@ -102,13 +102,13 @@ rc_in_read(rc_in *in, void *dst, size_t n)
 }
 
 int
-rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len)
+rc__in_line(rc_in *in, char *buf, size_t cap, size_t *len)
 {
 	size_t n = 0;
 	int c;
 
 	for (;;) {
-		if ((c = rc_in_getc(in)) == EOF) {
+		if ((c = rc__in_getc(in)) == EOF) {
 			buf[n] = '\0';
 			*len = n;
 			return n > 0 ? 2 : 0;
@@ -128,7 +128,7 @@ rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len)
 }
 
 int
-rc_in_check(const rc_in *in, rc_err *err)
+rc__in_check(const rc_in *in, rc_err *err)
 {
 	if (in->error)
 		return rc_seterr(err, "read error: %s", strerror(in->error));
@@ -151,7 +151,7 @@ remaining(rc_in *in)
 }
 
 rc_grid *
-rc_io_grid_alloc(size_t nx, size_t ny, double lx, double ly, rc_err *err)
+rc__io_grid_alloc(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
 	rc_grid *g;
 	double *z;
@@ -229,9 +229,9 @@ static int
 check_trailing(rc_in *in, rc_err *err)
 {
 	const unsigned char *p;
-	size_t n = rc_in_peek(in, 4096, &p);
+	size_t n = rc__in_peek(in, 4096, &p);
 
-	if (rc_in_check(in, err) != 0)
+	if (rc__in_check(in, err) != 0)
 		return -1;
 	if (n > 0)
 		return rc_seterr(err, "trailing garbage: %s%zu bytes after the data",
@@ -240,7 +240,7 @@ check_trailing(rc_in *in, rc_err *err)
 }
 
 rc_grid *
-rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
+rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
     const rc_layout *l, rc_err *err)
 {
 	unsigned char **chunk = NULL, *buf = NULL;
@@ -260,20 +260,20 @@ rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 			    need, left);
 			return NULL;
 		}
-		if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+		if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 			return NULL;
 		if ((buf = rc_malloc(CHUNK < need ? CHUNK : need, err)) == NULL)
 			goto fail;
 		for (k = 0; got < need; ) {
 			size_t want = need - got < CHUNK ? need - got : CHUNK, r;
 
-			r = rc_in_read(in, buf, want);
+			r = rc__in_read(in, buf, want);
 			/* A piece holds whole values: CHUNK is a multiple of 8. */
 			decode(buf, k, r / l->elsize, l, g);
 			k += r / l->elsize;
 			got += r;
 			if (r < want) {
-				if (rc_in_check(in, err) == 0)
+				if (rc__in_check(in, err) == 0)
 					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
 					    need, got);
 				goto fail;
@@ -297,11 +297,11 @@ rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 
 			if ((chunk[nchunk] = rc_malloc(want, err)) == NULL)
 				goto fail;
-			r = rc_in_read(in, chunk[nchunk], want);
+			r = rc__in_read(in, chunk[nchunk], want);
 			bytes[nchunk++] = r;
 			got += r;
 			if (r < want) {
-				if (rc_in_check(in, err) == 0)
+				if (rc__in_check(in, err) == 0)
 					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
 					    need, got);
 				goto fail;
@@ -309,7 +309,7 @@ rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 			if (piece < CHUNK)
 				piece *= 2;
 		}
-		if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+		if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 			goto fail;
 		/* Every piece is a power of two of at least 64 KiB, or the
 		 * rest: whole values each. */
@@ -337,7 +337,7 @@ fail:
 }
 
 int
-rc_parse_size(const char *s, size_t *v)
+rc__parse_size(const char *s, size_t *v)
 {
 	unsigned long long u = 0;
 
@@ -357,7 +357,7 @@ rc_parse_size(const char *s, size_t *v)
 }
 
 int
-rc_parse_double(const char *s, double *v)
+rc__parse_double(const char *s, double *v)
 {
 	char *end;
 
@@ -374,7 +374,7 @@ rc_parse_double(const char *s, double *v)
 }
 
 const char *
-rc_io_quote(char *buf, size_t len, const char *s, size_t n)
+rc__io_quote(char *buf, size_t len, const char *s, size_t n)
 {
 	size_t o = 0;
 
@@ -396,7 +396,7 @@ rc_io_quote(char *buf, size_t len, const char *s, size_t n)
 }
 
 void
-rc_put_le64(unsigned char *p, double v)
+rc__put_le64(unsigned char *p, double v)
 {
 	uint64_t u;
 
@@ -406,43 +406,43 @@ rc_put_le64(unsigned char *p, double v)
 }
 
 void
-rc_put_le32(unsigned char *p, uint32_t v)
+rc__put_le32(unsigned char *p, uint32_t v)
 {
 	for (int k = 0; k < 4; k++, v >>= 8)
 		p[k] = (unsigned char)(v & 0xff);
 }
 
 void
-rc_put_le32f(unsigned char *p, float v)
+rc__put_le32f(unsigned char *p, float v)
 {
 	uint32_t u;
 
 	memcpy(&u, &v, 4);
-	rc_put_le32(p, u);
+	rc__put_le32(p, u);
 }
 
 void
-rc_put_le16(unsigned char *p, uint16_t v)
+rc__put_le16(unsigned char *p, uint16_t v)
 {
 	p[0] = (unsigned char)(v & 0xff);
 	p[1] = (unsigned char)(v >> 8);
 }
 
 uint32_t
-rc_get_le32(const unsigned char *p)
+rc__get_le32(const unsigned char *p)
 {
 	return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 |
 	    (uint32_t)p[3] << 24;
 }
 
 uint16_t
-rc_get_le16(const unsigned char *p)
+rc__get_le16(const unsigned char *p)
 {
 	return (uint16_t)(p[0] | p[1] << 8);
 }
 
 int
-rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err)
+rc__io_write(FILE *fp, const void *p, size_t n, rc_err *err)
 {
 	if (n > 0 && fwrite(p, 1, n, fp) != n)
 		return rc_seterr(err, "write error: %s", strerror(errno));
@@ -450,23 +450,23 @@ rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err)
 }
 
 int
-rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
+rc__io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
     rc_err *err)
 {
 	unsigned char buf[8192];
 	size_t per = sizeof(buf) / elsize;
 
 	if (elsize == 8 && host_is_little_endian())
-		return rc_io_write(fp, z, n * 8, err);
+		return rc__io_write(fp, z, n * 8, err);
 	for (size_t i = 0; i < n; i += per) {
 		size_t m = n - i < per ? n - i : per;
 
 		for (size_t k = 0; k < m; k++)
 			if (elsize == 8)
-				rc_put_le64(buf + 8 * k, z[i + k]);
+				rc__put_le64(buf + 8 * k, z[i + k]);
 			else
-				rc_put_le32f(buf + 4 * k, (float)z[i + k]);
-		if (rc_io_write(fp, buf, m * elsize, err) != 0)
+				rc__put_le32f(buf + 4 * k, (float)z[i + k]);
+		if (rc__io_write(fp, buf, m * elsize, err) != 0)
 			return -1;
 	}
 	return 0;
@@ -558,7 +558,7 @@ static int
 looks_binary(rc_in *in)
 {
 	const unsigned char *p;
-	size_t n = rc_in_peek(in, 4096, &p);
+	size_t n = rc__in_peek(in, 4096, &p);
 
 	for (size_t k = 0; k < n; k++)
 		if ((p[k] < 0x20 && !(p[k] >= '\t' && p[k] <= '\r')) ||
@@ -577,7 +577,7 @@ gwy_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
 	(void)o;
-	return rc_gwy_read(b, n, s, err);
+	return rc__gwy_read(b, n, s, err);
 }
 
 static int
@@ -585,7 +585,7 @@ x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
 	(void)o;
-	return rc_x3p_read(b, n, s, err);
+	return rc__x3p_read(b, n, s, err);
 }
 
 /* Not text and no format of ours: Gwyddion's.  If Gwyddion cannot read
@@ -604,17 +604,17 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	FILE *fp = NULL;
 	int is_file = path != NULL && stat(path, &st) == 0 && S_ISREG(st.st_mode);
 
-	if (!is_file && rc_in_slurp(in, &buf, &len, err) != 0)
+	if (!is_file && rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
-	if (rc_gwyddion_read(is_file ? path : NULL, buf, len, s, &gerr) == 0) {
+	if (rc__gwyddion_read(is_file ? path : NULL, buf, len, s, &gerr) == 0) {
 		free(buf);
 		return 0;
 	}
-	rc_chanset_free(s);
+	rc__chanset_free(s);
 	fp = is_file ? fopen(path, "rb") : fmemopen(buf, len, "rb");
 	if (fp != NULL && (in2 = rc_malloc(sizeof(*in2), &terr)) != NULL) {
-		rc_in_init(in2, fp);
-		g = rc_txt_read(in2, o, &terr);
+		rc__in_init(in2, fp);
+		g = rc__txt_read(in2, o, &terr);
 	} else if (fp == NULL)
 		rc_seterr(&terr, "%s", strerror(errno));
 	free(in2);
@@ -622,7 +622,7 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 		fclose(fp);
 	free(buf);
 	if (g != NULL)
-		return rc_chanset_add(s, g, "", err);
+		return rc__chanset_add(s, g, "", err);
 	return rc_seterr(err, "%s; read as text: %s", gerr.msg, terr.msg);
 }
 
@@ -642,42 +642,42 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 
 	if ((in = rc_malloc(sizeof(*in), err)) == NULL)
 		return -1;
-	rc_in_init(in, fp);
-	n = rc_in_peek(in, 32, &p);
-	if (rc_in_check(in, err) != 0)
+	rc__in_init(in, fp);
+	n = rc__in_peek(in, 32, &p);
+	if (rc__in_check(in, err) != 0)
 		goto out;
 	if (n == 0) {
 		rc_seterr(err, "empty input");
 		goto out;
 	}
 	if (starts(p, n, "#surf", 5))
-		g = rc_surf_read(in, o, err);
+		g = rc__surf_read(in, o, err);
 	else if (starts(p, n, npy_magic, 6))
-		g = rc_npy_read(in, o, err);
+		g = rc__npy_read(in, o, err);
 	else if (starts(p, n, gsf_magic, sizeof(gsf_magic) - 1))
-		g = rc_gsf_read(in, o, err);
+		g = rc__gsf_read(in, o, err);
 	else if (starts(p, n, "aISO-1.0", 8) || starts(p, n, "bISO-1.0", 8) ||
 	    starts(p, n, "aBCR-1.0", 8) || starts(p, n, "bBCR-1.0", 8))
-		g = rc_sdf_read(in, o, err);
+		g = rc__sdf_read(in, o, err);
 	else if (starts(p, n, "GWYP", 4) || starts(p, n, "GWYO", 4))
 		whole = gwy_mem;
 	else if (starts(p, n, "PK\x03\x04", 4))
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||
 	    starts(p, n, "CDF\x05", 4) || starts(p, n, "\x89HDF\r\n\x1a\n", 8))
-		whole = rc_nc_read;
+		whole = rc__nc_read;
 	else if (looks_binary(in)) {
 		r = vendor(in, path, o, s, err);
 		goto out;
 	} else
-		g = rc_txt_read(in, o, err);
+		g = rc__txt_read(in, o, err);
 	if (whole != NULL) {
-		if (rc_in_slurp(in, &buf, &len, err) == 0)
+		if (rc__in_slurp(in, &buf, &len, err) == 0)
 			r = whole(buf, len, o, s, err);
 		goto out;
 	}
 	if (g != NULL)
-		r = rc_chanset_add(s, g, rc_io_title(g), err);
+		r = rc__chanset_add(s, g, rc__io_title(g), err);
 out:
 	free(buf);
 	free(in);
@@ -703,7 +703,7 @@ select_channel(rc_chanset *s, const rc_read_opts *o, rc_err *err)
 					break;
 		if (k == s->n) {
 			rc_seterr(err, "no channel titled '%s' (%zu channel%s; "
-			    "surfstat --channels lists them)", rc_io_quote(q, sizeof(q),
+			    "surfstat --channels lists them)", rc__io_quote(q, sizeof(q),
 			    o->channel_name, strlen(o->channel_name)), s->n,
 			    s->n == 1 ? "" : "s");
 			return NULL;
@@ -738,7 +738,7 @@ read_grid(FILE *fp, const char *path, const rc_read_opts *o, rc_err *err)
 
 	if (read_channels(fp, path, o, &s, err) == 0)
 		g = select_channel(&s, o, err);
-	rc_chanset_free(&s);
+	rc__chanset_free(&s);
 	if (g != NULL && rc_grid_read_finish(g, o, err) != 0) {
 		rc_grid_free(g);
 		g = NULL;
@@ -819,7 +819,7 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
 	}
 	if (r == 0)
 		*n = s.n;
-	rc_chanset_free(&s);
+	rc__chanset_free(&s);
 	return r;
 }
 
@@ -863,7 +863,7 @@ rc_format_name(enum rc_format f)
 }
 
 int
-rc_io_filled_text(const rc_grid *g, char **text, rc_err *err)
+rc__io_filled_text(const rc_grid *g, char **text, rc_err *err)
 {
 	*text = NULL;
 	if (g->filled == NULL)
@@ -887,7 +887,7 @@ rc_format_keeps_filled(const rc_grid *g, enum rc_format fmt, rc_err *err)
 		return 1;
 	if (fmt != RC_FMT_SURF && fmt != RC_FMT_TXT && fmt != RC_FMT_GSF)
 		return 0;
-	if (rc_io_filled_text(g, &text, err) != 0)
+	if (rc__io_filled_text(g, &text, err) != 0)
 		return -1;
 	keeps = text != NULL;
 	free(text);
@@ -901,12 +901,12 @@ rc_grid_write_stream(const rc_grid *g, FILE *fp, enum rc_format fmt,
 	int r;
 
 	switch (fmt) {
-	case RC_FMT_SURF: r = rc_surf_write(g, fp, err); break;
-	case RC_FMT_NPY: r = rc_npy_write(g, fp, err); break;
-	case RC_FMT_GSF: r = rc_gsf_write(g, fp, err); break;
-	case RC_FMT_TXT: r = rc_txt_write(g, fp, err); break;
-	case RC_FMT_X3P: r = rc_x3p_write(g, fp, err); break;
-	case RC_FMT_NC: r = rc_nc_write(g, fp, err); break;
+	case RC_FMT_SURF: r = rc__surf_write(g, fp, err); break;
+	case RC_FMT_NPY: r = rc__npy_write(g, fp, err); break;
+	case RC_FMT_GSF: r = rc__gsf_write(g, fp, err); break;
+	case RC_FMT_TXT: r = rc__txt_write(g, fp, err); break;
+	case RC_FMT_X3P: r = rc__x3p_write(g, fp, err); break;
+	case RC_FMT_NC: r = rc__nc_write(g, fp, err); break;
 	default: return rc_seterr(err, "unknown output format %d", (int)fmt);
 	}
 	if (r == 0 && (fflush(fp) != 0 || ferror(fp)))

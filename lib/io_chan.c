@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 
 int
-rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err)
+rc__chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err)
 {
 	if (s->n == s->cap) {
 		size_t cap = s->cap ? 2 * s->cap : 4;
@@ -32,7 +32,7 @@ rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err)
 }
 
 const char *
-rc_io_title(const rc_grid *g)
+rc__io_title(const rc_grid *g)
 {
 	const char *t = rc_grid_meta_get(g, "Title");
 
@@ -42,7 +42,7 @@ rc_io_title(const rc_grid *g)
 }
 
 void
-rc_chanset_free(rc_chanset *s)
+rc__chanset_free(rc_chanset *s)
 {
 	for (size_t i = 0; i < s->n; i++)
 		rc_grid_free(s->c[i].g);
@@ -52,18 +52,18 @@ rc_chanset_free(rc_chanset *s)
 }
 
 int
-rc_io_set_unit(char dst[32], const char *u, rc_err *err)
+rc__io_set_unit(char dst[32], const char *u, rc_err *err)
 {
 	char q[64];
 
 	u = rc_unit_canonical(u);	/* "\xc2\xb5m" and "\xce\xbcm" become "um" */
 	if (strlen(u) >= 32)
 		return rc_seterr(err, "unit '%s' longer than 31 characters",
-		    rc_io_quote(q, sizeof(q), u, strlen(u)));
+		    rc__io_quote(q, sizeof(q), u, strlen(u)));
 	for (const char *p = u; *p; p++)
 		if ((unsigned char)*p < 0x20 || *p == 0x7f)
 			return rc_seterr(err, "unit '%s' holds a control character",
-			    rc_io_quote(q, sizeof(q), u, strlen(u)));
+			    rc__io_quote(q, sizeof(q), u, strlen(u)));
 	strcpy(dst, u);
 	return 0;
 }
@@ -84,7 +84,7 @@ file_left(rc_in *in)
 }
 
 int
-rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err)
+rc__in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err)
 {
 	size_t cap = file_left(in) + 1, n = 0, r;
 	unsigned char *b, *nb;
@@ -111,12 +111,12 @@ rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err)
 			b = nb;
 			cap *= 2;
 		}
-		r = rc_in_read(in, b + n, cap - n);
+		r = rc__in_read(in, b + n, cap - n);
 		n += r;
 		if (n < cap)
 			break;
 	}
-	if (rc_in_check(in, err) != 0) {
+	if (rc__in_check(in, err) != 0) {
 		free(b);
 		return -1;
 	}
@@ -126,7 +126,7 @@ rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err)
 }
 
 int
-rc_in_read_exact(rc_in *in, size_t need, unsigned char **buf, rc_err *err)
+rc__in_read_exact(rc_in *in, size_t need, unsigned char **buf, rc_err *err)
 {
 	size_t cap = need < ((size_t)1 << 16) ? need : (size_t)1 << 16, n = 0, r;
 	unsigned char *b = rc_malloc(cap ? cap : 1, err), *nb;
@@ -145,14 +145,14 @@ rc_in_read_exact(rc_in *in, size_t need, unsigned char **buf, rc_err *err)
 			b = nb;
 			cap = ncap;
 		}
-		r = rc_in_read(in, b + n, cap - n);
+		r = rc__in_read(in, b + n, cap - n);
 		n += r;
 		if (n < cap)
 			break;
 	}
 	if (n < need) {
 		free(b);
-		if (rc_in_check(in, err) != 0)
+		if (rc__in_check(in, err) != 0)
 			return -1;
 		return rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
 		    need, n);
@@ -162,7 +162,7 @@ rc_in_read_exact(rc_in *in, size_t need, unsigned char **buf, rc_err *err)
 }
 
 double
-rc_io_per_metre(const char *u)
+rc__io_per_metre(const char *u)
 {
 	int exp10;
 

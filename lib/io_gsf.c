@@ -54,7 +54,7 @@ put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
 }
 
 int
-rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	static const char nul[4] = { 0 };
 	size_t n = rc_grid_size(g), len = strlen(MAGIC);
@@ -79,7 +79,7 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 			return rc_seterr(err, "value %g at i=%zu, j=%zu is beyond the "
 			    "float32 range of .gsf", g->z[k], k % g->nx, k / g->nx);
 	}
-	if (rc_io_write(fp, MAGIC, len, err) != 0)
+	if (rc__io_write(fp, MAGIC, len, err) != 0)
 		return -1;
 	snprintf(num, sizeof(num), "%zu", g->nx);
 	if (put(fp, &len, "XRes", num, err) != 0)
@@ -111,14 +111,14 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 	for (size_t i = 0; i < g->nhistory; i++)
 		if (put(fp, &len, "surf.history", g->history[i], err) != 0)
 			return -1;
-	if (rc_io_filled_text(g, &filled, err) != 0)
+	if (rc__io_filled_text(g, &filled, err) != 0)
 		return -1;
 	r = filled != NULL ? put(fp, &len, "surf.filled", filled, err) : 0;
 	free(filled);
-	if (r != 0 || rc_io_write(fp, nul, 4 - len % 4, err) != 0)
+	if (r != 0 || rc__io_write(fp, nul, 4 - len % 4, err) != 0)
 		return -1;
 	if (!zlength)
-		return rc_io_write_values(fp, g->z, n, 4, err);
+		return rc__io_write_values(fp, g->z, n, 4, err);
 	/* Values in metres: through a small buffer. */
 	if ((d = rc_malloc(4096 * sizeof(double), err)) == NULL)
 		return -1;
@@ -127,7 +127,7 @@ rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 
 		for (size_t i = 0; i < m; i++)
 			d[i] = rc_unit_convert(g->z[k + i], zfrom, "m");
-		if (rc_io_write_values(fp, d, m, 4, err) != 0) {
+		if (rc__io_write_values(fp, d, m, 4, err) != 0) {
 			free(d);
 			return -1;
 		}
@@ -189,7 +189,7 @@ valid_key(const char *key)
 }
 
 rc_grid *
-rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
 	char *head = NULL, *line, *next, q[64];
 	struct field *f = NULL;
@@ -206,16 +206,16 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 		ly = o->ly;
 	}
 	for (size_t k = 0; k < strlen(MAGIC); k++)
-		if (rc_in_getc(in) != MAGIC[k]) {
+		if (rc__in_getc(in) != MAGIC[k]) {
 			rc_seterr(err, "bad magic line: expected 'Gwyddion Simple Field 1.0'");
 			return NULL;
 		}
 	if ((head = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
 		return NULL;
 	/* The header runs to the first NUL. */
-	while ((c = rc_in_getc(in)) != 0) {
+	while ((c = rc__in_getc(in)) != 0) {
 		if (c == EOF) {
-			if (rc_in_check(in, err) == 0)
+			if (rc__in_check(in, err) == 0)
 				rc_seterr(err, "truncated header: no NUL byte ends it");
 			goto out;
 		}
@@ -228,11 +228,11 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	head[n] = '\0';
 	/* Data at the next multiple of 4 after that NUL; the rest is padding. */
 	while (in->consumed % 4 != 0) {
-		if ((c = rc_in_getc(in)) == 0)
+		if ((c = rc__in_getc(in)) == 0)
 			continue;
 		if (c != EOF)
 			rc_seterr(err, "header padding holds a non-NUL byte");
-		else if (rc_in_check(in, err) == 0)
+		else if (rc__in_check(in, err) == 0)
 			rc_seterr(err, "truncated header padding");
 		goto out;
 	}
@@ -249,7 +249,7 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 			continue;
 		if ((eq = strchr(line, '=')) == NULL) {
 			rc_seterr(err, "header line %zu is not 'Name = Value': '%s'",
-			    lineno + 1, rc_io_quote(q, sizeof(q), key, strlen(key)));
+			    lineno + 1, rc__io_quote(q, sizeof(q), key, strlen(key)));
 			goto out;
 		}
 		*eq = '\0';
@@ -264,21 +264,21 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 		rc_seterr(err, "header lacks %s", lookup(f, nf, "XRes") ? "YRes" : "XRes");
 		goto out;
 	}
-	if (rc_parse_size(lookup(f, nf, "XRes"), &nx) != 0 ||
-	    rc_parse_size(lookup(f, nf, "YRes"), &ny) != 0) {
+	if (rc__parse_size(lookup(f, nf, "XRes"), &nx) != 0 ||
+	    rc__parse_size(lookup(f, nf, "YRes"), &ny) != 0) {
 		rc_seterr(err, "XRes, YRes must be positive integers");
 		goto out;
 	}
-	if ((v = lookup(f, nf, "XReal")) != NULL && rc_parse_double(v, &lx) != 0) {
-		rc_seterr(err, "XReal '%s' is not a number", rc_io_quote(q, sizeof(q), v, strlen(v)));
+	if ((v = lookup(f, nf, "XReal")) != NULL && rc__parse_double(v, &lx) != 0) {
+		rc_seterr(err, "XReal '%s' is not a number", rc__io_quote(q, sizeof(q), v, strlen(v)));
 		goto out;
 	}
-	if ((v = lookup(f, nf, "YReal")) != NULL && rc_parse_double(v, &ly) != 0) {
-		rc_seterr(err, "YReal '%s' is not a number", rc_io_quote(q, sizeof(q), v, strlen(v)));
+	if ((v = lookup(f, nf, "YReal")) != NULL && rc__parse_double(v, &ly) != 0) {
+		rc_seterr(err, "YReal '%s' is not a number", rc__io_quote(q, sizeof(q), v, strlen(v)));
 		goto out;
 	}
 	if ((v = lookup(f, nf, "surf.kind")) != NULL && (kind = rc_kind_parse(v)) < 0) {
-		rc_seterr(err, "surf.kind '%s' is unknown", rc_io_quote(q, sizeof(q), v, strlen(v)));
+		rc_seterr(err, "surf.kind '%s' is unknown", rc__io_quote(q, sizeof(q), v, strlen(v)));
 		goto out;
 	}
 	own = lookup(f, nf, "surf.kind") != NULL;
@@ -310,7 +310,7 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	if (strlen(unit) >= sizeof(g->unit) || strlen(z_to) >= sizeof(g->z_unit)) {
 		const char *u = strlen(unit) >= sizeof(g->unit) ? unit : z_to;
 
-		rc_seterr(err, "unit '%s' longer than %zu characters", rc_io_quote(q,
+		rc_seterr(err, "unit '%s' longer than %zu characters", rc__io_quote(q,
 		    sizeof(q), u, strlen(u)), sizeof(g->unit) - 1);
 		goto out;
 	}
@@ -320,7 +320,7 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	}
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		goto out;
-	if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
+	if ((g = rc__in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL)
 		goto out;
 	g->kind = (enum rc_kind)kind;
 	strcpy(g->unit, unit);
@@ -357,7 +357,7 @@ rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 			char msg[RC_ERRLEN];
 
 			snprintf(msg, sizeof(msg), "%s", err ? err->msg : "");
-			rc_seterr(err, "header field '%s': %s", rc_io_quote(q, sizeof(q),
+			rc_seterr(err, "header field '%s': %s", rc__io_quote(q, sizeof(q),
 			    key, strlen(key)), msg);
 			rc_grid_free(g);
 			g = NULL;

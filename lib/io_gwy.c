@@ -72,7 +72,7 @@ get_u32(struct cur *c, uint32_t *v, rc_err *err)
 {
 	if (left(c) < 4)
 		return bad(err, "truncated");
-	*v = rc_get_le32(c->p);
+	*v = rc__get_le32(c->p);
 	c->p += 4;
 	return 0;
 }
@@ -180,7 +180,7 @@ read_unit(struct cur *c, char u[32], rc_err *err)
 			return -1;
 		if (strcmp(name, "unitstr") == 0 && t == 's') {
 			if (get_str(&body, &s, err) != 0 ||
-			    rc_io_set_unit(u, s, err) != 0)
+			    rc__io_set_unit(u, s, err) != 0)
 				return -1;
 		} else if (skip_value(&body, t, err) != 0)
 			return -1;
@@ -209,7 +209,7 @@ read_field(struct cur *c, struct field *f, rc_err *err)
 		    t == 'i') {
 			if (left(&body) < 4)
 				return bad(err, "truncated");
-			i32 = (int32_t)rc_get_le32(body.p);
+			i32 = (int32_t)rc__get_le32(body.p);
 			body.p += 4;
 			if (i32 < 1)
 				return bad(err, "xres or yres below 1");
@@ -310,7 +310,7 @@ make_channel(const struct entry *e, rc_chanset *s, rc_err *err)
 	    f->yreal > 0))
 		return rc_seterr(err, "corrupt .gwy file: channel %lu has size "
 		    "%g x %g", e->id, f->xreal, f->yreal);
-	if ((g = rc_io_grid_alloc(f->xres, f->yres, f->xreal, f->yreal, err)) ==
+	if ((g = rc__io_grid_alloc(f->xres, f->yres, f->xreal, f->yreal, err)) ==
 	    NULL)
 		return -1;
 	for (size_t k = 0; k < n; k++)
@@ -331,11 +331,11 @@ make_channel(const struct entry *e, rc_chanset *s, rc_err *err)
 	}
 	if (e->title == NULL)
 		snprintf(title, sizeof(title), "channel %lu", e->id);
-	return rc_chanset_add(s, g, e->title ? e->title : title, err);
+	return rc__chanset_add(s, g, e->title ? e->title : title, err);
 }
 
 int
-rc_gwy_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
+rc__gwy_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 {
 	struct cur c = { buf, buf + len }, body;
 	struct entry *e = NULL, *ent;

@@ -94,15 +94,15 @@ read_file(const char *path, unsigned char **buf, size_t *len, rc_err *err)
 		fclose(fp);
 		return -1;
 	}
-	rc_in_init(in, fp);
-	r = rc_in_slurp(in, buf, len, err);
+	rc__in_init(in, fp);
+	r = rc__in_slurp(in, buf, len, err);
 	free(in);
 	fclose(fp);
 	return r;
 }
 
 int
-rc_gwyddion_read(const char *path, const unsigned char *data, size_t len,
+rc__gwyddion_read(const char *path, const unsigned char *data, size_t len,
     rc_chanset *s, rc_err *err)
 {
 	const char *prog = getenv("RC_GWYDDION"), *tmp = getenv("TMPDIR");
@@ -158,7 +158,7 @@ rc_gwyddion_read(const char *path, const unsigned char *data, size_t len,
 	r = -1;
 	if (read_file(out, &gwy, &gwylen, err) != 0)
 		goto out;
-	r = rc_gwy_read(gwy, gwylen, s, err);
+	r = rc__gwy_read(gwy, gwylen, s, err);
 out:
 	if (dir != NULL && dir[0] != '\0') {
 		if (made_in)

@@ -4,6 +4,9 @@
  * Readers never seek: the input may be a pipe.  rc_in wraps a FILE with a
  * buffer the format detector and the header parsers can peek into, and
  * counts the bytes consumed so far (the data offset of a file).
+ *
+ * Private to the library (not installed): its functions carry the
+ * internal prefix rc__, as in solver_impl.h and cstats_impl.h.
  */
 #ifndef RC_IO_INTERNAL_H
 #define RC_IO_INTERNAL_H
@@ -34,68 +37,68 @@ typedef struct rc_layout {
 	int fortran;		/* column-major (npy fortran_order) */
 } rc_layout;
 
-void rc_in_init(rc_in *in, FILE *fp);
+void rc__in_init(rc_in *in, FILE *fp);
 /* Buffer at least n bytes (n <= RC_IN_BUFSIZE) if the input has them;
  * *p points at them.  Returns how many are available (< n only at end). */
-size_t rc_in_peek(rc_in *in, size_t n, const unsigned char **p);
-int rc_in_getc(rc_in *in);
-size_t rc_in_read(rc_in *in, void *dst, size_t n);
+size_t rc__in_peek(rc_in *in, size_t n, const unsigned char **p);
+int rc__in_getc(rc_in *in);
+size_t rc__in_read(rc_in *in, void *dst, size_t n);
 /* One line into buf (NUL-terminated, without the newline); *len its
  * length (it may contain NUL bytes).  Returns 1 for a line ended by '\n',
  * 2 for a last line without one, 0 at end of input, -1 if the line does
  * not fit in cap - 1 bytes. */
-int rc_in_line(rc_in *in, char *buf, size_t cap, size_t *len);
+int rc__in_line(rc_in *in, char *buf, size_t cap, size_t *len);
 /* A read error becomes an rc_err message; returns -1 if there was one. */
-int rc_in_check(const rc_in *in, rc_err *err);
+int rc__in_check(const rc_in *in, rc_err *err);
 
 /* Read nx*ny values laid out as l into a new grid of that shape, never
  * allocating more than the input proves to hold, and check that nothing
  * follows them. */
-rc_grid *rc_in_read_values(rc_in *in, size_t nx, size_t ny, double lx,
+rc_grid *rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx,
     double ly, const rc_layout *l, rc_err *err);
 /* A grid whose values are not initialised (the reader fills them). */
-rc_grid *rc_io_grid_alloc(size_t nx, size_t ny, double lx, double ly,
+rc_grid *rc__io_grid_alloc(size_t nx, size_t ny, double lx, double ly,
     rc_err *err);
 
 /* Parsers of header values; 0 on success. */
-int rc_parse_size(const char *s, size_t *v);
-int rc_parse_double(const char *s, double *v);
+int rc__parse_size(const char *s, size_t *v);
+int rc__parse_double(const char *s, double *v);
 /* Make a string printable for an error message (at most 40 characters). */
-const char *rc_io_quote(char *buf, size_t len, const char *s, size_t n);
+const char *rc__io_quote(char *buf, size_t len, const char *s, size_t n);
 
 /* Little-endian encoding, independent of the host's byte order. */
-void rc_put_le64(unsigned char *p, double v);
-void rc_put_le32f(unsigned char *p, float v);
-void rc_put_le32(unsigned char *p, uint32_t v);
-void rc_put_le16(unsigned char *p, uint16_t v);
-uint32_t rc_get_le32(const unsigned char *p);
-uint16_t rc_get_le16(const unsigned char *p);
+void rc__put_le64(unsigned char *p, double v);
+void rc__put_le32f(unsigned char *p, float v);
+void rc__put_le32(unsigned char *p, uint32_t v);
+void rc__put_le16(unsigned char *p, uint16_t v);
+uint32_t rc__get_le32(const unsigned char *p);
+uint16_t rc__get_le16(const unsigned char *p);
 /* Write n bytes; -1 with a message on failure. */
-int rc_io_write(FILE *fp, const void *p, size_t n, rc_err *err);
+int rc__io_write(FILE *fp, const void *p, size_t n, rc_err *err);
 /* Values as float64 LE (elsize 8) or float32 LE (elsize 4). */
-int rc_io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
+int rc__io_write_values(FILE *fp, const double *z, size_t n, size_t elsize,
     rc_err *err);
 
 /* The filled points as a header writes them: *text malloc'ed, or NULL
  * when g has none or their list exceeds RC_FILLED_MAX (left out). */
-int rc_io_filled_text(const rc_grid *g, char **text, rc_err *err);
+int rc__io_filled_text(const rc_grid *g, char **text, rc_err *err);
 
 /* The format readers (after detection) and writers. */
-rc_grid *rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
-rc_grid *rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
-rc_grid *rc_gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
-rc_grid *rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err);
-int rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err);
+rc_grid *rc__surf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc__npy_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+int rc__surf_write(const rc_grid *g, FILE *fp, rc_err *err);
 /* The .surf header alone, for MPI-IO (lib/mpi/): write g's header for a
  * grid of ny rows (g's own values are not written); read a header from
  * fp into a grid of nx x 1 (values zero), the rows into *ny and the byte
  * offset of the values into *data_offset. */
-int rc_surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err);
-rc_grid *rc_surf_read_header(FILE *fp, size_t *ny, size_t *data_offset,
+int rc__surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err);
+rc_grid *rc__surf_read_header(FILE *fp, size_t *ny, size_t *data_offset,
     rc_err *err);
-int rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err);
-int rc_gsf_write(const rc_grid *g, FILE *fp, rc_err *err);
-int rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc__npy_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc__gsf_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc__txt_write(const rc_grid *g, FILE *fp, rc_err *err);
 
 /* The channels of one file (.gwy, x3p, netCDF, vendor formats through
  * Gwyddion); a single-channel format gives one. */
@@ -111,39 +114,39 @@ typedef struct rc_chanset {
  * "# Channel:" line of Gwyddion's text export, which their readers keep as
  * the metadata Title and channel (a grid converted from them keeps it);
  * "" if neither. */
-const char *rc_io_title(const rc_grid *g);
+const char *rc__io_title(const rc_grid *g);
 /* Append g (the set owns it from now on, also on failure). */
-int rc_chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err);
-void rc_chanset_free(rc_chanset *s);
+int rc__chanset_add(rc_chanset *s, rc_grid *g, const char *title, rc_err *err);
+void rc__chanset_free(rc_chanset *s);
 /* Store a unit string from a file in dst (32 bytes): "\xc2\xb5m" and
  * "\xce\xbcm" become "um", anything too long is an error. */
-int rc_io_set_unit(char dst[32], const char *u, rc_err *err);
+int rc__io_set_unit(char dst[32], const char *u, rc_err *err);
 /* Units of a length unit per metre (1e6 for "um"), 0 if u is none
  * (the length units are those of units.h). */
-double rc_io_per_metre(const char *u);
+double rc__io_per_metre(const char *u);
 
 /* The rest of the input in memory (*buf malloc'ed, *len bytes), growing
  * with what the input really holds. */
-int rc_in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err);
+int rc__in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err);
 /* Exactly n bytes into a new buffer, allocating no more than about twice
  * what the input holds; "truncated" if it holds fewer. */
-int rc_in_read_exact(rc_in *in, size_t n, unsigned char **buf, rc_err *err);
+int rc__in_read_exact(rc_in *in, size_t n, unsigned char **buf, rc_err *err);
 
 /* Readers of whole files held in memory: every channel into s. */
-int rc_gwy_read(const unsigned char *buf, size_t len, rc_chanset *s,
+int rc__gwy_read(const unsigned char *buf, size_t len, rc_chanset *s,
     rc_err *err);
-int rc_x3p_read(const unsigned char *buf, size_t len, rc_chanset *s,
+int rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s,
     rc_err *err);
 /* netCDF: o gives the cell size when the file has none. */
-int rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+int rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err);
-rc_grid *rc_sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
+rc_grid *rc__sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
 /* Any other format: Gwyddion converts the file at path (or, path NULL,
  * the len bytes at buf, spooled to a temporary file) to .gwy, which
- * rc_gwy_read reads. */
-int rc_gwyddion_read(const char *path, const unsigned char *buf, size_t len,
+ * rc__gwy_read reads. */
+int rc__gwyddion_read(const char *path, const unsigned char *buf, size_t len,
     rc_chanset *s, rc_err *err);
-int rc_x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
-int rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
+int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);
 
 #endif

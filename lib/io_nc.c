@@ -234,7 +234,7 @@ classic_header_ok(const unsigned char *buf, size_t len)
 }
 
 int
-rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
 	int nc, hv, xv = -1, yv = -1, ndims, dims[2], st, r = -1;
@@ -302,10 +302,10 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		goto out;
 	if ((st = api->get_var_double(nc, hv, t)) != NC_NOERR)
 		goto nc;
-	if ((g = rc_io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
+	if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 		goto out;
-	if (unit[0] != '\0' && (rc_io_set_unit(g->unit, unit, err) != 0 ||
-	    rc_io_set_unit(g->z_unit, unit, err) != 0))
+	if (unit[0] != '\0' && (rc__io_set_unit(g->unit, unit, err) != 0 ||
+	    rc__io_set_unit(g->z_unit, unit, err) != 0))
 		goto out;
 	g->periodic = per != 0;
 	for (size_t i = 0; i < nx; i++)
@@ -323,7 +323,7 @@ rc_nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 			g->valid[k] = 0;
 			g->z[k] = NAN;
 		}
-	r = rc_chanset_add(s, g, "heights", err);
+	r = rc__chanset_add(s, g, "heights", err);
 	g = NULL;
 	goto out;
 nc:
@@ -337,7 +337,7 @@ out:
 }
 
 int
-rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	size_t nx = g->nx, ny = g->ny, n = nx * ny;
 	int nc, dx, dy, xv, yv, hv, dims[2], st, per = g->periodic ? 1 : 0;
@@ -349,7 +349,7 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 
 	/* One unit for all: the heights' (they stay bit for bit). */
 	if (g->z_unit[0] != '\0' && strcmp(g->z_unit, g->unit) != 0) {
-		double from = rc_io_per_metre(g->unit), to = rc_io_per_metre(g->z_unit);
+		double from = rc__io_per_metre(g->unit), to = rc__io_per_metre(g->z_unit);
 
 		if (from == 0 || to == 0)
 			return rc_seterr(err, "netCDF (contact.engineering) holds "
@@ -421,7 +421,7 @@ rc_nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 	open = 0;
 	if ((st = api->close_memio(nc, &mem)) != NC_NOERR)
 		goto nc;
-	r = rc_io_write(fp, mem.memory, mem.size, err);
+	r = rc__io_write(fp, mem.memory, mem.size, err);
 	goto out;
 nc:
 	nc_fail(api, err, "write", st);

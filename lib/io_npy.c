@@ -18,7 +18,7 @@
 static const unsigned char magic[6] = { 0x93, 'N', 'U', 'M', 'P', 'Y' };
 
 int
-rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__npy_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	unsigned char pre[10];
 	char dict[256];
@@ -36,11 +36,11 @@ rc_npy_write(const rc_grid *g, FILE *fp, rc_err *err)
 	memcpy(pre, magic, 6);
 	pre[6] = 1;
 	pre[7] = 0;
-	rc_put_le16(pre + 8, (uint16_t)(total - 10));
-	if (rc_io_write(fp, pre, 10, err) != 0 ||
-	    rc_io_write(fp, dict, total - 10, err) != 0)
+	rc__put_le16(pre + 8, (uint16_t)(total - 10));
+	if (rc__io_write(fp, pre, 10, err) != 0 ||
+	    rc__io_write(fp, dict, total - 10, err) != 0)
 		return -1;
-	return rc_io_write_values(fp, g->z, rc_grid_size(g), 8, err);
+	return rc__io_write_values(fp, g->z, rc_grid_size(g), 8, err);
 }
 
 /* A tiny parser of the Python dict literal numpy writes. */
@@ -146,7 +146,7 @@ shape(struct parser *p, size_t dim[3])
 }
 
 rc_grid *
-rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+rc__npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
 	unsigned char pre[12];
 	char *head = NULL, key[32], descr[32] = "", q[64];
@@ -156,22 +156,22 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	rc_layout layout = { 8, 0, 0 };
 	rc_grid *g = NULL;
 
-	if ((got = rc_in_read(in, pre, 10)) < 10) {
-		if (rc_in_check(in, err) == 0)
+	if ((got = rc__in_read(in, pre, 10)) < 10) {
+		if (rc__in_check(in, err) == 0)
 			rc_seterr(err, "truncated npy preamble: %zu of 10 bytes", got);
 		return NULL;
 	}
 	major = pre[6];
 	if (major == 1)
-		hlen = rc_get_le16(pre + 8);
+		hlen = rc__get_le16(pre + 8);
 	else if (major == 2 || major == 3) {
-		if ((got = rc_in_read(in, pre + 10, 2)) < 2) {
-			if (rc_in_check(in, err) == 0)
+		if ((got = rc__in_read(in, pre + 10, 2)) < 2) {
+			if (rc__in_check(in, err) == 0)
 				rc_seterr(err, "truncated npy preamble: %zu of 12 bytes",
 				    10 + got);
 			return NULL;
 		}
-		hlen = rc_get_le32(pre + 8);
+		hlen = rc__get_le32(pre + 8);
 	} else {
 		rc_seterr(err, "npy format version %d.%d not supported (1.0, 2.0, 3.0)",
 		    pre[6], pre[7]);
@@ -184,8 +184,8 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	}
 	if ((head = rc_malloc(hlen + 1, err)) == NULL)
 		return NULL;
-	if ((got = rc_in_read(in, head, hlen)) < hlen) {
-		if (rc_in_check(in, err) == 0)
+	if ((got = rc__in_read(in, head, hlen)) < hlen) {
+		if (rc__in_check(in, err) == 0)
 			rc_seterr(err, "truncated npy header: expected %zu bytes, got %zu",
 			    hlen, got);
 		goto out;
@@ -221,7 +221,7 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 				goto syntax;
 		} else {
 			rc_seterr(err, "npy header: unexpected or repeated key '%s'",
-			    rc_io_quote(q, sizeof(q), key, strlen(key)));
+			    rc__io_quote(q, sizeof(q), key, strlen(key)));
 			goto out;
 		}
 		skip_ws(&p);
@@ -243,7 +243,7 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	if (strlen(descr) != 3 || (descr[0] != '<' && descr[0] != '>') ||
 	    descr[1] != 'f' || (descr[2] != '4' && descr[2] != '8')) {
 		rc_seterr(err, "npy dtype '%s' not supported (use <f8, >f8, <f4 or >f4)",
-		    rc_io_quote(q, sizeof(q), descr, strlen(descr)));
+		    rc__io_quote(q, sizeof(q), descr, strlen(descr)));
 		goto out;
 	}
 	layout.elsize = descr[2] == '8' ? 8 : 4;
@@ -268,12 +268,12 @@ rc_npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 		rc_seterr(err, "npy shape too large: a dimension exceeds %u", RC_GRID_MAX_DIM);
 		goto out;
 	}
-	g = rc_in_read_values(in, nx, ny, o && o->have_l ? o->lx : 1,
+	g = rc__in_read_values(in, nx, ny, o && o->have_l ? o->lx : 1,
 	    o && o->have_l ? o->ly : 1, &layout, err);
 	goto out;
 syntax:
 	rc_seterr(err, "npy header is not a valid dict near '%s'",
-	    rc_io_quote(q, sizeof(q), p.s, (size_t)(p.end - p.s)));
+	    rc__io_quote(q, sizeof(q), p.s, (size_t)(p.end - p.s)));
 out:
 	free(head);
 	return g;

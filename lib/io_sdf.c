@@ -55,10 +55,10 @@ decode(const unsigned char *p, int t, int *missing)
 	*missing = 0;
 	switch (t) {
 	case 0: return p[0];
-	case 1: return rc_get_le16(p);
-	case 2: return rc_get_le32(p);
+	case 1: return rc__get_le16(p);
+	case 2: return rc__get_le32(p);
 	case 3:
-		u32 = rc_get_le32(p);
+		u32 = rc__get_le32(p);
 		memcpy(&f, &u32, 4);
 		*missing = isnan(f);
 		return f;
@@ -66,11 +66,11 @@ decode(const unsigned char *p, int t, int *missing)
 		*missing = p[0] == 0x80;
 		return (int8_t)p[0];
 	case 5:
-		*missing = rc_get_le16(p) == 0x8000;
-		return (int16_t)rc_get_le16(p);
+		*missing = rc__get_le16(p) == 0x8000;
+		return (int16_t)rc__get_le16(p);
 	case 6:
-		*missing = rc_get_le32(p) == 0x80000000u;
-		return (int32_t)rc_get_le32(p);
+		*missing = rc__get_le32(p) == 0x80000000u;
+		return (int32_t)rc__get_le32(p);
 	default:
 		v = le_double(p);
 		*missing = isnan(v);
@@ -129,13 +129,13 @@ read_binary(rc_in *in, rc_err *err)
 	size_t n, el;
 	int m;
 
-	if (rc_in_read(in, h, BIN_HEADER) != BIN_HEADER) {
-		if (rc_in_check(in, err) == 0)
+	if (rc__in_read(in, h, BIN_HEADER) != BIN_HEADER) {
+		if (rc__in_check(in, err) == 0)
 			rc_seterr(err, "SDF: truncated binary header");
 		return NULL;
 	}
-	d.nx = rc_get_le16(h + 34);
-	d.ny = rc_get_le16(h + 36);
+	d.nx = rc__get_le16(h + 34);
+	d.ny = rc__get_le16(h + 36);
 	d.xs = le_double(h + 38);
 	d.ys = le_double(h + 46);
 	d.zs = le_double(h + 54);
@@ -145,10 +145,10 @@ read_binary(rc_in *in, rc_err *err)
 		return NULL;
 	n = d.nx * d.ny;
 	el = type_size[d.type];
-	if (rc_in_read_exact(in, n * el, &b, err) != 0)
+	if (rc__in_read_exact(in, n * el, &b, err) != 0)
 		return NULL;
 	if ((miss = rc_malloc(n, err)) == NULL ||
-	    (g = rc_io_grid_alloc(d.nx, d.ny, (double)d.nx * d.xs,
+	    (g = rc__io_grid_alloc(d.nx, d.ny, (double)d.nx * d.xs,
 	    (double)d.ny * d.ys, err)) == NULL)
 		goto fail;
 	for (size_t k = 0; k < n; k++) {
@@ -174,7 +174,7 @@ word(rc_in *in, char *w, size_t cap, rc_err *err)
 	size_t n = 0;
 	int c;
 
-	while ((c = rc_in_getc(in)) != EOF && (c == ' ' || (c >= '\t' &&
+	while ((c = rc__in_getc(in)) != EOF && (c == ' ' || (c >= '\t' &&
 	    c <= '\r')))
 		;
 	while (c != EOF && !(c == ' ' || (c >= '\t' && c <= '\r'))) {
@@ -182,10 +182,10 @@ word(rc_in *in, char *w, size_t cap, rc_err *err)
 			return rc_seterr(err, "SDF: a value longer than %zu characters",
 			    cap - 1);
 		w[n++] = (char)c;
-		c = rc_in_getc(in);
+		c = rc__in_getc(in);
 	}
 	w[n] = '\0';
-	if (rc_in_check(in, err) != 0)
+	if (rc__in_check(in, err) != 0)
 		return -1;
 	return n > 0;
 }
@@ -201,11 +201,11 @@ read_ascii(rc_in *in, rc_err *err)
 	int r, seen = 0;
 
 	for (;;) {
-		if ((r = rc_in_line(in, line, sizeof(line), &len)) <= 0) {
+		if ((r = rc__in_line(in, line, sizeof(line), &len)) <= 0) {
 			if (r < 0)
 				rc_seterr(err, "SDF: header line over %zu bytes",
 				    sizeof(line) - 1);
-			else if (rc_in_check(in, err) == 0)
+			else if (rc__in_check(in, err) == 0)
 				rc_seterr(err, "SDF: header without the '*' line that ends it");
 			return NULL;
 		}
@@ -221,7 +221,7 @@ read_ascii(rc_in *in, rc_err *err)
 			continue;
 		if ((eq = strchr(key, '=')) == NULL) {
 			rc_seterr(err, "SDF: header line '%s' is not 'Name = Value'",
-			    rc_io_quote(q, sizeof(q), key, strlen(key)));
+			    rc__io_quote(q, sizeof(q), key, strlen(key)));
 			return NULL;
 		}
 		for (e = eq; e > key && (e[-1] == ' ' || e[-1] == '\t'); e--)
@@ -232,14 +232,14 @@ read_ascii(rc_in *in, rc_err *err)
 		{
 			double v;
 			size_t u;
-			int isnum = rc_parse_double(val, &v) == 0;
+			int isnum = rc__parse_double(val, &v) == 0;
 
 			if (strcmp(key, "NumPoints") == 0 || strcmp(key, "NumProfiles") == 0
 			    || strcmp(key, "Compression") == 0 ||
 			    strcmp(key, "DataType") == 0) {
-				if (rc_parse_size(val, &u) != 0 || u > 1000000000) {
+				if (rc__parse_size(val, &u) != 0 || u > 1000000000) {
 					rc_seterr(err, "SDF: %s '%s' is not a count", key,
-					    rc_io_quote(q, sizeof(q), val, strlen(val)));
+					    rc__io_quote(q, sizeof(q), val, strlen(val)));
 					return NULL;
 				}
 				if (key[0] == 'N' && key[3] == 'P' && key[4] == 'o')
@@ -254,7 +254,7 @@ read_ascii(rc_in *in, rc_err *err)
 			    || strcmp(key, "Zscale") == 0) {
 				if (!isnum) {
 					rc_seterr(err, "SDF: %s '%s' is not a number", key,
-					    rc_io_quote(q, sizeof(q), val, strlen(val)));
+					    rc__io_quote(q, sizeof(q), val, strlen(val)));
 					return NULL;
 				}
 				*(key[0] == 'X' ? &d.xs : key[0] == 'Y' ? &d.ys : &d.zs) = v;
@@ -306,10 +306,10 @@ read_ascii(rc_in *in, rc_err *err)
 				miss = nm;
 			}
 			miss[k] = strcmp(line, "BAD") == 0;
-			if (!miss[k] && (rc_parse_double(line, &z[k]) != 0 ||
+			if (!miss[k] && (rc__parse_double(line, &z[k]) != 0 ||
 			    !isfinite(z[k]))) {
 				rc_seterr(err, "SDF: value %zu '%s' is not a number", k + 1,
-				    rc_io_quote(q, sizeof(q), line, strlen(line)));
+				    rc__io_quote(q, sizeof(q), line, strlen(line)));
 				goto fail_z;
 			}
 			if (miss[k])
@@ -321,7 +321,7 @@ read_ascii(rc_in *in, rc_err *err)
 			    k, n);
 			goto fail_z;
 		}
-		if ((g = rc_io_grid_alloc(d.nx, d.ny, (double)d.nx * d.xs,
+		if ((g = rc__io_grid_alloc(d.nx, d.ny, (double)d.nx * d.xs,
 		    (double)d.ny * d.ys, err)) == NULL)
 			goto fail_z;
 		memcpy(g->z, z, n * sizeof(double));
@@ -342,12 +342,12 @@ fail_z:
 }
 
 rc_grid *
-rc_sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+rc__sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
 	unsigned char magic[8];
 
 	(void)o;
-	if (rc_in_read(in, magic, 8) != 8) {
+	if (rc__in_read(in, magic, 8) != 8) {
 		rc_seterr(err, "SDF: truncated magic");
 		return NULL;
 	}
@@ -357,7 +357,7 @@ rc_sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	{
 		int c;
 
-		while ((c = rc_in_getc(in)) != '\n')
+		while ((c = rc__in_getc(in)) != '\n')
 			if (c == EOF || (c != '\r' && c != ' ' && c != '\t')) {
 				rc_seterr(err, "SDF: junk after the magic 'aISO-1.0'");
 				return NULL;

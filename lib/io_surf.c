@@ -61,7 +61,7 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 	size_t offset, total, pad;
 	int r = -1;
 
-	if (rc_io_filled_text(g, &filled, err) != 0)
+	if (rc__io_filled_text(g, &filled, err) != 0)
 		return -1;
 
 	add(&head, MAGIC "\n# rough-contact grid; float64 LE values from "
@@ -110,14 +110,14 @@ write_surf(const rc_grid *g, size_t ny, int values, FILE *fp, rc_err *err)
 		    "(too much metadata or history)", offset, RC_HEADER_MAX);
 		goto out;
 	}
-	if (rc_io_write(fp, head.s, head.len, err) != 0 ||
-	    rc_io_write(fp, line, strlen(line), err) != 0 ||
-	    rc_io_write(fp, tail.s, tail.len, err) != 0 ||
-	    rc_io_write(fp, END, strlen(END), err) != 0 ||
-	    rc_io_write(fp, "        ", pad, err) != 0 ||
-	    rc_io_write(fp, "\n", 1, err) != 0)
+	if (rc__io_write(fp, head.s, head.len, err) != 0 ||
+	    rc__io_write(fp, line, strlen(line), err) != 0 ||
+	    rc__io_write(fp, tail.s, tail.len, err) != 0 ||
+	    rc__io_write(fp, END, strlen(END), err) != 0 ||
+	    rc__io_write(fp, "        ", pad, err) != 0 ||
+	    rc__io_write(fp, "\n", 1, err) != 0)
 		goto out;
-	r = values ? rc_io_write_values(fp, g->z, rc_grid_size(g), 8, err) : 0;
+	r = values ? rc__io_write_values(fp, g->z, rc_grid_size(g), 8, err) : 0;
 out:
 	free(head.s);
 	free(tail.s);
@@ -196,14 +196,14 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		size_t cap = RC_HEADER_MAX - (size_t)in->consumed;
 
 		lineno++;
-		r = cap < 2 ? -1 : rc_in_line(in, line, cap, &len);
+		r = cap < 2 ? -1 : rc__in_line(in, line, cap, &len);
 		if (r == -1) {
 			rc_seterr(err, "header longer than %zu bytes (no '" END "' line)",
 			    RC_HEADER_MAX);
 			goto fail;
 		}
 		if (r == 0 || r == 2) {
-			if (rc_in_check(in, err) == 0)
+			if (rc__in_check(in, err) == 0)
 				rc_seterr(err, "truncated header: input ends at line %zu "
 				    "before the '" END "' line", lineno);
 			goto fail;
@@ -216,10 +216,10 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 			if (strcmp(line, MAGIC) != 0) {
 				if (strncmp(line, "#surf ", 6) == 0)
 					rc_seterr(err, "format version '%s': this reader "
-					    "knows '" MAGIC "'", rc_io_quote(q, sizeof(q), line, len));
+					    "knows '" MAGIC "'", rc__io_quote(q, sizeof(q), line, len));
 				else
 					rc_seterr(err, "bad magic line '%s': expected '" MAGIC "'",
-					    rc_io_quote(q, sizeof(q), line, len));
+					    rc__io_quote(q, sizeof(q), line, len));
 				goto fail;
 			}
 			continue;
@@ -240,7 +240,7 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		}
 		if (split(line, &key, &val) != 0) {
 			rc_seterr(err, "header line %zu is not 'key = value': '%s'",
-			    lineno, rc_io_quote(q, sizeof(q), line, len));
+			    lineno, rc__io_quote(q, sizeof(q), line, len));
 			goto fail;
 		}
 		if (strcmp(key, "history") == 0) {
@@ -294,7 +294,7 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		if (r == K_N) {
 			rc_seterr(err, "header line %zu: unknown key '%s' "
 			    "(metadata keys start with 'meta.')", lineno,
-			    rc_io_quote(q, sizeof(q), key, strlen(key)));
+			    rc__io_quote(q, sizeof(q), key, strlen(key)));
 			goto fail;
 		}
 		if (vals[r] != NULL) {
@@ -311,48 +311,48 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 			rc_seterr(err, "header lacks the required key '%s'", keys[r]);
 			goto fail;
 		}
-	if (rc_parse_size(vals[K_NX], &nx) != 0 || rc_parse_size(vals[K_NY], &ny) != 0) {
+	if (rc__parse_size(vals[K_NX], &nx) != 0 || rc__parse_size(vals[K_NY], &ny) != 0) {
 		rc_seterr(err, "nx = '%s', ny = '%s': sizes must be positive integers",
-		    rc_io_quote(q, 32, vals[K_NX], strlen(vals[K_NX])),
-		    rc_io_quote(q + 32, 32, vals[K_NY], strlen(vals[K_NY])));
+		    rc__io_quote(q, 32, vals[K_NX], strlen(vals[K_NX])),
+		    rc__io_quote(q + 32, 32, vals[K_NY], strlen(vals[K_NY])));
 		goto fail;
 	}
-	if (rc_parse_double(vals[K_LX], &lx) != 0 || rc_parse_double(vals[K_LY], &ly) != 0) {
+	if (rc__parse_double(vals[K_LX], &lx) != 0 || rc__parse_double(vals[K_LY], &ly) != 0) {
 		rc_seterr(err, "lx = '%s', ly = '%s': lengths must be numbers",
-		    rc_io_quote(q, 32, vals[K_LX], strlen(vals[K_LX])),
-		    rc_io_quote(q + 32, 32, vals[K_LY], strlen(vals[K_LY])));
+		    rc__io_quote(q, 32, vals[K_LX], strlen(vals[K_LX])),
+		    rc__io_quote(q + 32, 32, vals[K_LY], strlen(vals[K_LY])));
 		goto fail;
 	}
 	if ((kind = rc_kind_parse(vals[K_KIND])) < 0) {
-		rc_seterr(err, "unknown kind '%s'", rc_io_quote(q, sizeof(q),
+		rc_seterr(err, "unknown kind '%s'", rc__io_quote(q, sizeof(q),
 		    vals[K_KIND], strlen(vals[K_KIND])));
 		goto fail;
 	}
 	if (strcmp(vals[K_ENC], "float64-le") != 0) {
 		rc_seterr(err, "encoding '%s' not supported (only float64-le)",
-		    rc_io_quote(q, sizeof(q), vals[K_ENC], strlen(vals[K_ENC])));
+		    rc__io_quote(q, sizeof(q), vals[K_ENC], strlen(vals[K_ENC])));
 		goto fail;
 	}
 	if (vals[K_UNIT] != NULL && strlen(vals[K_UNIT]) >= sizeof(g->unit)) {
-		rc_seterr(err, "unit '%s' longer than %zu characters", rc_io_quote(q,
+		rc_seterr(err, "unit '%s' longer than %zu characters", rc__io_quote(q,
 		    sizeof(q), vals[K_UNIT], strlen(vals[K_UNIT])), sizeof(g->unit) - 1);
 		goto fail;
 	}
 	if (vals[K_ZUNIT] != NULL && strlen(vals[K_ZUNIT]) >= sizeof(g->z_unit)) {
-		rc_seterr(err, "z_unit '%s' longer than %zu characters", rc_io_quote(q,
+		rc_seterr(err, "z_unit '%s' longer than %zu characters", rc__io_quote(q,
 		    sizeof(q), vals[K_ZUNIT], strlen(vals[K_ZUNIT])), sizeof(g->z_unit) - 1);
 		goto fail;
 	}
 	if (vals[K_PERIODIC] != NULL && strcmp(vals[K_PERIODIC], "0") != 0 &&
 	    strcmp(vals[K_PERIODIC], "1") != 0) {
-		rc_seterr(err, "periodic = '%s': want 0 or 1", rc_io_quote(q,
+		rc_seterr(err, "periodic = '%s': want 0 or 1", rc__io_quote(q,
 		    sizeof(q), vals[K_PERIODIC], strlen(vals[K_PERIODIC])));
 		goto fail;
 	}
-	if (vals[K_OFFSET] != NULL && (rc_parse_size(vals[K_OFFSET], &offset) != 0 ||
+	if (vals[K_OFFSET] != NULL && (rc__parse_size(vals[K_OFFSET], &offset) != 0 ||
 	    offset != in->consumed)) {
 		rc_seterr(err, "data_offset = %s, but the header ends at byte %llu",
-		    rc_io_quote(q, sizeof(q), vals[K_OFFSET], strlen(vals[K_OFFSET])),
+		    rc__io_quote(q, sizeof(q), vals[K_OFFSET], strlen(vals[K_OFFSET])),
 		    (unsigned long long)in->consumed);
 		goto fail;
 	}
@@ -362,7 +362,7 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		*header_ny = ny;
 		if ((g = rc_grid_new(nx, 1, lx, ly, err)) == NULL)
 			goto fail;
-	} else if ((g = rc_in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL ||
+	} else if ((g = rc__in_read_values(in, nx, ny, lx, ly, &layout, err)) == NULL ||
 	    (vals[K_FILLED] != NULL &&
 	    rc_grid_filled_parse(g, vals[K_FILLED], err) != 0))
 		goto fail;
@@ -399,31 +399,31 @@ out:
 }
 
 int
-rc_surf_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__surf_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	return write_surf(g, g->ny, 1, fp, err);
 }
 
 int
-rc_surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err)
+rc__surf_write_header(const rc_grid *g, size_t ny, FILE *fp, rc_err *err)
 {
 	return write_surf(g, ny, 0, fp, err);
 }
 
 rc_grid *
-rc_surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+rc__surf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
 	(void)o;
 	return read_surf(in, NULL, err);
 }
 
 rc_grid *
-rc_surf_read_header(FILE *fp, size_t *ny, size_t *data_offset, rc_err *err)
+rc__surf_read_header(FILE *fp, size_t *ny, size_t *data_offset, rc_err *err)
 {
 	rc_in in;
 	rc_grid *g;
 
-	rc_in_init(&in, fp);
+	rc__in_init(&in, fp);
 	if ((g = read_surf(&in, ny, err)) != NULL)
 		*data_offset = (size_t)in.consumed;
 	return g;

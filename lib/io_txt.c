@@ -29,12 +29,12 @@
 #define TOKEN_MAX 128
 
 int
-rc_txt_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	char num[64], *filled;
 	int bad = 0;
 
-	if (rc_io_filled_text(g, &filled, err) != 0)
+	if (rc__io_filled_text(g, &filled, err) != 0)
 		return -1;
 	bad |= fprintf(fp, "%s\n# nx = %zu\n# ny = %zu\n", MAGIC, g->nx, g->ny) < 0;
 	rc_format_double(num, sizeof(num), g->lx);
@@ -128,7 +128,7 @@ gwy_comment(struct header *h, char *key, size_t lineno, rc_err *err)
 		if (end == val || !(*v > 0) || !isfinite(*v) ||
 		    (*end != '\0' && *end != ' ' && *end != '\t'))
 			return rc_seterr(err, "line %zu: %s '%s' is not a positive "
-			    "length", lineno, key, rc_io_quote(q, sizeof(q), val,
+			    "length", lineno, key, rc__io_quote(q, sizeof(q), val,
 			    strlen(val)));
 		while (*end == ' ' || *end == '\t')
 			end++;
@@ -181,9 +181,9 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 
 		if (*have)
 			return rc_seterr(err, "line %zu: %s given twice", lineno, key);
-		if (rc_parse_size(val, v) != 0)
+		if (rc__parse_size(val, v) != 0)
 			return rc_seterr(err, "line %zu: %s = '%s' is not a size",
-			    lineno, key, rc_io_quote(q, sizeof(q), val, strlen(val)));
+			    lineno, key, rc__io_quote(q, sizeof(q), val, strlen(val)));
 		*have = 1;
 	} else if (strcmp(key, "lx") == 0 || strcmp(key, "ly") == 0) {
 		double *v = key[1] == 'x' ? &h->lx : &h->ly;
@@ -191,9 +191,9 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 
 		if (*have)
 			return rc_seterr(err, "line %zu: %s given twice", lineno, key);
-		if (rc_parse_double(val, v) != 0)
+		if (rc__parse_double(val, v) != 0)
 			return rc_seterr(err, "line %zu: %s = '%s' is not a number",
-			    lineno, key, rc_io_quote(q, sizeof(q), val, strlen(val)));
+			    lineno, key, rc__io_quote(q, sizeof(q), val, strlen(val)));
 		*have = 1;
 	} else if (strcmp(key, "unit") == 0) {
 		if (strlen(val) >= sizeof(h->unit))
@@ -208,12 +208,12 @@ comment(struct header *h, char *line, size_t lineno, rc_err *err)
 	} else if (strcmp(key, "periodic") == 0) {
 		if (strcmp(val, "0") != 0 && strcmp(val, "1") != 0)
 			return rc_seterr(err, "line %zu: periodic = '%s': want 0 or 1",
-			    lineno, rc_io_quote(q, sizeof(q), val, strlen(val)));
+			    lineno, rc__io_quote(q, sizeof(q), val, strlen(val)));
 		h->periodic = val[0] == '1';
 	} else if (strcmp(key, "kind") == 0) {
 		if ((r = rc_kind_parse(val)) < 0)
 			return rc_seterr(err, "line %zu: unknown kind '%s'", lineno,
-			    rc_io_quote(q, sizeof(q), val, strlen(val)));
+			    rc__io_quote(q, sizeof(q), val, strlen(val)));
 		h->kind = r;
 	} else if (strncmp(key, "meta.", 5) == 0 && key[5] != '\0') {
 		if (push(&h->mkey, h->nmeta, key + 5) != 0)
@@ -334,7 +334,7 @@ columns(const double *v, size_t ncol, size_t n, rc_err *err)
 		dy = dx;
 	lx = (double)nxg * fabs(dx);
 	ly = (double)nyg * fabs(dy);
-	if ((g = rc_io_grid_alloc(nxg, nyg, lx, ly, err)) == NULL)
+	if ((g = rc__io_grid_alloc(nxg, nyg, lx, ly, err)) == NULL)
 		return NULL;
 	for (size_t k = 0; k < n; k++) {
 		size_t i = x_fast ? k % nxg : k / nyg, j = x_fast ? k / nxg : k % nyg;
@@ -350,7 +350,7 @@ columns(const double *v, size_t ncol, size_t n, rc_err *err)
 }
 
 rc_grid *
-rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
 	struct header h = { .periodic = -1 };
 	double *v = NULL, lx = 1, ly = 1;
@@ -369,7 +369,7 @@ rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	/* One pass over characters: no line is ever held whole, so a long
 	 * row costs nothing beyond its values. */
 	for (;;) {
-		c = rc_in_getc(in);
+		c = rc__in_getc(in);
 		if (in_comment) {
 			if (c != '\n' && c != EOF) {
 				if (comment_is_header) {
@@ -406,7 +406,7 @@ rc_txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 			if (tlen >= TOKEN_MAX) {
 				tok[TOKEN_MAX] = '\0';
 				rc_seterr(err, "line %zu: '%s' is not a number", lineno,
-				    rc_io_quote(q, sizeof(q), tok, TOKEN_MAX));
+				    rc__io_quote(q, sizeof(q), tok, TOKEN_MAX));
 				goto fail;
 			}
 			tok[tlen++] = (char)c;
@@ -418,9 +418,9 @@ token:
 			double d;
 
 			tok[tlen] = '\0';
-			if (rc_parse_double(tok, &d) != 0) {
+			if (rc__parse_double(tok, &d) != 0) {
 				rc_seterr(err, "line %zu: '%s' is not a number", lineno,
-				    rc_io_quote(q, sizeof(q), tok, tlen));
+				    rc__io_quote(q, sizeof(q), tok, tlen));
 				goto fail;
 			}
 			if (nv == cap) {
@@ -481,7 +481,7 @@ token:
 			lineno++;
 		}
 	}
-	if (rc_in_check(in, err) != 0)
+	if (rc__in_check(in, err) != 0)
 		goto fail;
 	if (rows == 0) {
 		rc_seterr(err, "no values (empty input or only comments)");
@@ -511,7 +511,7 @@ token:
 	if (!h.own && !h.have_nx && !h.have_ny && !h.have_width &&
 	    (nx == 2 || nx == 3) && rows >= 4)
 		g = columns(v, nx, rows, err);
-	else if ((g = rc_io_grid_alloc(nx, rows, lx, ly, err)) != NULL) {
+	else if ((g = rc__io_grid_alloc(nx, rows, lx, ly, err)) != NULL) {
 		memcpy(g->z, v, nv * sizeof(*v));
 		/* Our files say; a plain matrix is periodic by rule; Gwyddion
 		 * exports measurements. */

@@ -104,7 +104,7 @@ read_entry(zip_t *za, const char *name, zip_uint64_t want, unsigned char **buf,
 
 	if ((zf = zip_fopen(za, name, 0)) == NULL)
 		return rc_seterr(err, "x3p: no entry '%s' in the container",
-		    rc_io_quote(q, sizeof(q), name, strlen(name)));
+		    rc__io_quote(q, sizeof(q), name, strlen(name)));
 	/* Deflate expands at most about 1032 times: a start that fits a
 	 * stored entry at once and costs little for a lying one. */
 	if (zip_stat(za, name, ZIP_STAT_COMP_SIZE, &st) == 0 &&
@@ -129,7 +129,7 @@ read_entry(zip_t *za, const char *name, zip_uint64_t want, unsigned char **buf,
 		}
 		r = zip_fread(zf, b + n, cap - n);
 		if (r < 0) {
-			rc_seterr(err, "x3p: %s: %s", rc_io_quote(q, sizeof(q), name,
+			rc_seterr(err, "x3p: %s: %s", rc__io_quote(q, sizeof(q), name,
 			    strlen(name)), zip_strerror(za));
 			goto fail;
 		}
@@ -139,7 +139,7 @@ read_entry(zip_t *za, const char *name, zip_uint64_t want, unsigned char **buf,
 		if (n > limit) {
 			rc_seterr(err, want ? "x3p: %s holds more than the %zu bytes "
 			    "main.xml describes" : "x3p: %s is over %zu bytes",
-			    rc_io_quote(q, sizeof(q), name, strlen(name)), limit);
+			    rc__io_quote(q, sizeof(q), name, strlen(name)), limit);
 			goto fail;
 		}
 	}
@@ -147,7 +147,7 @@ read_entry(zip_t *za, const char *name, zip_uint64_t want, unsigned char **buf,
 	if (want && n != want) {
 		free(b);
 		return rc_seterr(err, "x3p: %s holds %zu bytes; main.xml describes "
-		    "%zu", rc_io_quote(q, sizeof(q), name, strlen(name)), n,
+		    "%zu", rc__io_quote(q, sizeof(q), name, strlen(name)), n,
 		    (size_t)want);
 	}
 	*buf = b;
@@ -182,9 +182,9 @@ get_number(const xmlNode *n, const char *path, double dflt, double *v,
 		*v = dflt;
 		return 0;
 	}
-	if (rc_parse_double(buf, v) != 0 || !isfinite(*v))
+	if (rc__parse_double(buf, v) != 0 || !isfinite(*v))
 		return rc_seterr(err, "x3p: %s '%s' is not a number", path,
-		    rc_io_quote(q, sizeof(q), buf, strlen(buf)));
+		    rc__io_quote(q, sizeof(q), buf, strlen(buf)));
 	return 0;
 }
 
@@ -195,9 +195,9 @@ get_size(const xmlNode *n, const char *path, size_t *v, rc_err *err)
 
 	if (text_at(n, path, buf, sizeof(buf)) == NULL)
 		return rc_seterr(err, "x3p: main.xml lacks %s", path);
-	if (rc_parse_size(buf, v) != 0 || *v < 1)
+	if (rc__parse_size(buf, v) != 0 || *v < 1)
 		return rc_seterr(err, "x3p: %s '%s' is not a positive integer", path,
-		    rc_io_quote(q, sizeof(q), buf, strlen(buf)));
+		    rc__io_quote(q, sizeof(q), buf, strlen(buf)));
 	return 0;
 }
 
@@ -219,7 +219,7 @@ read_desc(const xmlNode *root, struct desc *d, rc_err *err)
 	if (text_at(r1, "FeatureType", buf, sizeof(buf)) == NULL ||
 	    (strcmp(buf, "SUR") != 0 && strcmp(buf, "PRF") != 0))
 		return rc_seterr(err, "x3p: FeatureType '%s' is not SUR or PRF "
-		    "(point clouds are not grids)", rc_io_quote(q, sizeof(q), buf,
+		    "(point clouds are not grids)", rc__io_quote(q, sizeof(q), buf,
 		    strlen(buf)));
 	for (int k = 0; k < 2; k++) {
 		const char *a = k ? "CY/AxisType" : "CX/AxisType";
@@ -239,7 +239,7 @@ read_desc(const xmlNode *root, struct desc *d, rc_err *err)
 	if (text_at(ax, "CZ/DataType", buf, sizeof(buf)) == NULL ||
 	    strlen(buf) != 1 || strchr("ILFD", buf[0]) == NULL)
 		return rc_seterr(err, "x3p: CZ/DataType '%s' is not I, L, F or D",
-		    rc_io_quote(q, sizeof(q), buf, strlen(buf)));
+		    rc__io_quote(q, sizeof(q), buf, strlen(buf)));
 	d->type = buf[0];
 	if (get_size(root, "Record3/MatrixDimension/SizeX", &d->nx, err) != 0 ||
 	    get_size(root, "Record3/MatrixDimension/SizeY", &d->ny, err) != 0 ||
@@ -260,10 +260,10 @@ raw_value(const unsigned char *p, char type)
 	float f;
 
 	switch (type) {
-	case 'I': return (int16_t)rc_get_le16(p);
-	case 'L': return (int32_t)rc_get_le32(p);
+	case 'I': return (int16_t)rc__get_le16(p);
+	case 'L': return (int32_t)rc__get_le32(p);
 	case 'F': {
-		uint32_t w = rc_get_le32(p);
+		uint32_t w = rc__get_le32(p);
 
 		memcpy(&f, &w, 4);
 		return f;
@@ -337,7 +337,7 @@ read_values(zip_t *za, const xmlNode *r3, const struct desc *d, rc_grid *g,
 			xmlFree(t);
 			if (buf[0] == '\0')
 				g->z[k] = NAN;
-			else if (rc_parse_double(buf, &g->z[k]) != 0) {
+			else if (rc__parse_double(buf, &g->z[k]) != 0) {
 				rc_seterr(err, "x3p: Datum %zu is not a number", k + 1);
 				goto fail;
 			}
@@ -415,7 +415,7 @@ check_main_sum(zip_t *za, const xmlNode *root, const unsigned char *xml,
 }
 
 int
-rc_x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
+rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 {
 	zip_error_t ze;
 	zip_source_t *src;
@@ -459,7 +459,7 @@ rc_x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 	if (check_main_sum(za, root, xml, xlen, err) != 0 ||
 	    read_desc(root, &d, err) != 0)
 		goto out;
-	if ((g = rc_io_grid_alloc(d.nx, d.ny, d.nx * d.dx, d.ny * d.dy, err)) ==
+	if ((g = rc__io_grid_alloc(d.nx, d.ny, d.nx * d.dx, d.ny * d.dy, err)) ==
 	    NULL)
 		goto out;
 	if (read_values(za, child(root, "Record3"), &d, g, err) != 0)
@@ -467,7 +467,7 @@ rc_x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 	strcpy(g->unit, "m");
 	strcpy(g->z_unit, "m");
 	g->periodic = 0;
-	r = rc_chanset_add(s, g, "heights", err);
+	r = rc__chanset_add(s, g, "heights", err);
 	g = NULL;
 out:
 	rc_grid_free(g);
@@ -594,7 +594,7 @@ copy_out(zip_source_t *src, FILE *fp, rc_err *err)
 		return rc_seterr(err, "x3p: %s",
 		    zip_error_strerror(zip_source_error(src)));
 	while ((r = zip_source_read(src, buf, sizeof(buf))) > 0)
-		if (rc_io_write(fp, buf, (size_t)r, err) != 0) {
+		if (rc__io_write(fp, buf, (size_t)r, err) != 0) {
 			zip_source_close(src);
 			return -1;
 		}
@@ -606,7 +606,7 @@ copy_out(zip_source_t *src, FILE *fp, rc_err *err)
 }
 
 int
-rc_x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
+rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	size_t n = rc_grid_size(g), vlen = (n + 7) / 8;
 	double scale = 1;	/* units per metre */
@@ -618,11 +618,11 @@ rc_x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
 	zip_source_t *src = NULL;
 	zip_t *za = NULL;
 
-	if (g->unit[0] != '\0' && (scale = rc_io_per_metre(g->unit)) == 0)
+	if (g->unit[0] != '\0' && (scale = rc__io_per_metre(g->unit)) == 0)
 		return rc_seterr(err, "x3p holds lengths in metres; unit '%s' is "
 		    "not a length", g->unit);
 	if (g->z_unit[0] != '\0' && strcmp(g->z_unit, g->unit) != 0 &&
-	    rc_io_per_metre(g->z_unit) == 0)
+	    rc__io_per_metre(g->z_unit) == 0)
 		return rc_seterr(err, "x3p holds heights in metres; z unit '%s' "
 		    "is not a length", g->z_unit);
 	if (g->kind != RC_KIND_HEIGHT && g->kind != RC_KIND_GAP &&
@@ -632,13 +632,13 @@ rc_x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
 	if ((data = rc_malloc(8 * n, err)) == NULL)
 		return -1;
 	{
-		double zs = g->z_unit[0] != '\0' ? rc_io_per_metre(g->z_unit) :
+		double zs = g->z_unit[0] != '\0' ? rc__io_per_metre(g->z_unit) :
 		    scale;
 
 		for (size_t k = 0; k < n; k++) {
 			double v = g->valid && !g->valid[k] ? NAN : g->z[k];
 
-			rc_put_le64(data + 8 * k, zs == 1 ? v : v / zs);
+			rc__put_le64(data + 8 * k, zs == 1 ? v : v / zs);
 		}
 	}
 	rc_md5_hex(data, 8 * n, dsum);

@@ -24,14 +24,15 @@
  *   1e-4     29   0                              59   0
  *   1e-6     43   0                              73   0
  *   1e-9     65   0                              94   0
- * (FIRE iterations cost two FFT pairs, CG's one or two: fire.c, pkcg.c.)
+ * (FIRE iterations cost two FFT pairs, CG's one or two: solver_fire.c,
+ * solver_cg.c.)
  * The default 1e-6 leaves a margin of two decades over the first
  * tolerance at which every contact point is right.
  *
  * Free boundaries (opts.boundary): the padded compliance of
  * elastic_free.h replaces K and G; without K the measure is the gap
- * bound of pkcg.c for both methods (FIRE then runs on the pressures,
- * fire_free.c).
+ * bound of solver_cg.c for both methods (FIRE then runs on the pressures,
+ * solver_fire_free.c).
  */
 #include "solver_impl.h"
 
@@ -53,7 +54,7 @@ rc_solver_defaults(rc_solver_opts *o)
 	o->modulus = 1;
 	o->tol = 1e-6;
 	o->max_iter = 100000;
-	o->measure = 0;
+	o->fft_effort = RC_FFT_ESTIMATE;
 }
 
 const char *
@@ -167,12 +168,12 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->ly = ind->ly;
 	s->free_bc = o->boundary == RC_BOUNDARY_FREE;
 	/* Free boundaries: the padded compliance; FIRE on them also uses
-	 * the periodic stiffness as its inverse mass (fire_free.c). */
+	 * the periodic stiffness as its inverse mass (solver_fire_free.c). */
 	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
-	    s->ly, o->modulus, (enum rc_fft_effort)o->measure, err) != 0) ||
+	    s->ly, o->modulus, o->fft_effort, err) != 0) ||
 	    ((!s->free_bc || o->method == RC_METHOD_FIRE) &&
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
-	    (enum rc_fft_effort)o->measure, err) != 0)) {
+	    o->fft_effort, err) != 0)) {
 		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;
@@ -280,7 +281,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	s->last_pressure = p;
 	res->seconds = rc_clock() - t0;
 	/* Free: pairs of the padded 2nx x 2ny transform (FIRE adds its
-	 * unpadded ones, fire_free.c). */
+	 * unpadded ones, solver_fire_free.c). */
 	if (s->free_bc)
 		res->fft_pairs += (double)(s->fel.n_pairs - padded);
 	else
@@ -314,7 +315,8 @@ double
 rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 {
 #ifdef RC_MPI
-	double n = (double)s->el.n;	/* the sums are global (fire.c) */
+	/* the sums are global (solver_fire.c) */
+	double n = (double)s->el.n;
 #else
 	double n = (double)s->n;
 #endif

@@ -36,7 +36,7 @@ enum rc_boundary {
 typedef struct rc_solver_opts {
 	enum rc_method method;
 	/* Free boundaries: grids of at least 2 x 2; FIRE runs on pressures
-	 * there (fire_free.c). */
+	 * there (solver_fire_free.c). */
 	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
 	/* The periodic elastic kernel (elastic.h): the continuum q E* / 2
@@ -46,7 +46,7 @@ typedef struct rc_solver_opts {
 	 * RC_KERNEL_PIXEL, and ignore it.  The pixel kernel has no layer. */
 	enum rc_kernel kernel;
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
-	 * 0 or +inf: no cap (the default).  CG only (pkcg_plastic.c,
+	 * 0 or +inf: no cap (the default).  CG only (solver_cg_plastic.c,
 	 * gfmd-solve(1) PLASTICITY). */
 	double hardness;
 	/* An elastic layer of this thickness (lateral length units) on a
@@ -58,8 +58,10 @@ typedef struct rc_solver_opts {
 	double poisson;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
-	int measure;		/* FFT planning effort, an enum rc_fft_effort
-				 * (0: ESTIMATE, 1: MEASURE, ...) */
+	/* FFT planning effort (fft.h); RC_FFT_ESTIMATE by default.  The MPI
+	 * solver (lib/mpi/dsolver.h) plans with FFTW_ESTIMATE for
+	 * RC_FFT_ESTIMATE and with FFTW_MEASURE for any other effort. */
+	enum rc_fft_effort fft_effort;
 	/* Called every few iterations if not NULL (progress on a terminal). */
 	void (*progress)(void *ctx, long iter, double residual, double contact_fraction);
 	void *progress_ctx;

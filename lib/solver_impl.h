@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_impl.h - the state behind rc_solver, shared by solver.c (options,
- * dispatch, accessors, convergence measure) and the two methods (fire.c,
- * pkcg.c).  Private to the library. */
+ * dispatch, accessors, convergence measure), the methods (solver_fire.c,
+ * solver_fire_free.c, solver_cg.c, solver_cg_plastic.c) and displacement
+ * control (solver_approach.c).  Private to the library. */
 #ifndef RC_SOLVER_IMPL_H
 #define RC_SOLVER_IMPL_H
 
@@ -42,23 +43,23 @@ void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
-/* Free boundaries (pkcg.c): the rigid level c = <h - G sigma> over
+/* Free boundaries (solver_cg.c): the rigid level c = <h - G sigma> over
  * {sigma > 0} (returns its size); the convergence measure and the
  * admissible u' from s->u = G sigma (leaves u', the contact set, level
  * and energy); the stiffness scale of that measure.  FIRE on pressures
- * (fire_free.c). */
+ * (solver_fire_free.c). */
 size_t rc__level(const rc_solver *s, double *c);
 double rc__final_check_free(rc_solver *s, double p);
 double rc__stiffness_max(const rc_solver *s);
 int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
-/* Shared by pkcg.c and pkcg_plastic.c: out = G x; G_00 of the periodic
- * compliance; the CG start pressure of mean p (unbounded). */
+/* Shared by solver_cg.c and solver_cg_plastic.c: out = G x; G_00 of the
+ * periodic compliance; the CG start pressure of mean p (unbounded). */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
-/* CG with the pressure bounded by opts.hardness (pkcg_plastic.c). */
+/* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 

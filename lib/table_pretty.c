@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* table_pretty.c - the aligned, rounded view of a result table for a
- * terminal (see table.h, rc_table_pretty).
+ * terminal (see table_write.h, rc_table_pretty).
  *
  * Column widths depend on every row, so the rows are kept and drawn by
  * rc_table_end.  Non-integer numbers are rounded to PRETTY_DIGITS
@@ -10,7 +10,7 @@
  * transposed: one line per column name, one right-aligned value column per
  * row, as many rows side by side as fit (a block of 64 at most).
  */
-#include "table.h"
+#include "table_write.h"
 
 #include <stdlib.h>
 #include <string.h>

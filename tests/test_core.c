@@ -11,7 +11,7 @@
 #include "fft.h"
 #include "grid.h"
 #include "spectral.h"
-#include "table.h"
+#include "table_write.h"
 #include "testlib.h"
 
 static void

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_plastic.c - perfect plasticity (opts.hardness, pkcg_plastic.c):
+/* test_plastic.c - perfect plasticity (opts.hardness, solver_cg_plastic.c):
  * the bound, load balance and complementarity; the full-plasticity limit
  * a_r = p/H; H -> infinity against the elastic CG; a flat punch that
  * flows entirely at the load H A; FIRE refused. */

@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "table.h"
+#include "table_write.h"
 #include "testlib.h"
 
 /* Write rows of (p, n, method, k = row number) through the view of the given width

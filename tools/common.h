@@ -16,7 +16,7 @@
 #include "fft.h"
 #include "grid.h"
 #include "io.h"
-#include "table.h"
+#include "table_write.h"
 
 #define RC_VERSION "0.1.0"
 

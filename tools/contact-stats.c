@@ -15,8 +15,8 @@
 #include "atomic.h"
 #include "common.h"
 #include "cstats.h"
-#include "rows.h"
-#include "table.h"
+#include "table_read.h"
+#include "table_write.h"
 
 enum {
 	OPT_GROUP_BY = OPT_TOOL_FIRST,

@@ -22,7 +22,7 @@
 #include "png.h"
 #include "solver.h"
 #include "spectral.h"
-#include "table.h"
+#include "table_write.h"
 #include "units.h"
 
 /* Set by SIGINT/SIGTERM; the solver polls it every iteration. */
@@ -445,7 +445,7 @@ solver_setup(struct run *r)
 		o->so.progress_ctx = &r->pr;
 	}
 	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
-	o->so.measure = (int)tool_fft_effort(&r->t, r->h->nx, r->h->ny, 1e4);
+	o->so.fft_effort = tool_fft_effort(&r->t, r->h->nx, r->h->ny, 1e4);
 	r->plan_seconds = rc_clock();
 	if ((r->solver = rc_solver_new(r->h, &o->so, &err)) == NULL)
 		tool_fail(&r->t, "%s", err.msg);

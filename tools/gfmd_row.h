@@ -7,7 +7,7 @@
 #include "contact.h"
 #include "grid.h"
 #include "solver.h"
-#include "table.h"
+#include "table_write.h"
 
 struct gfmd_row {
 	double p_star, p, gbar;

@@ -23,7 +23,7 @@
 #include "psd.h"
 #include "spectral.h"
 #include "stats.h"
-#include "table.h"
+#include "table_write.h"
 
 enum {
 	OPT_MASK = OPT_TOOL_FIRST,

@@ -104,7 +104,7 @@ share_header(rc_grid *head, size_t *ny, rc_err *err)
 	if (rc_mpi_rank() == 0) {
 		FILE *fp = open_memstream(&text, &len);
 
-		if (fp == NULL || rc_surf_write_header(head, *ny, fp, err) != 0)
+		if (fp == NULL || rc__surf_write_header(head, *ny, fp, err) != 0)
 			st = -1;
 		if (fp != NULL && fclose(fp) != 0 && st == 0)
 			st = rc_seterr(err, "out of memory");
@@ -125,7 +125,7 @@ share_header(rc_grid *head, size_t *ny, rc_err *err)
 	if (rc_mpi_rank() != 0) {
 		FILE *fp = fmemopen(text, meta[0], "r");
 
-		head = fp != NULL ? rc_surf_read_header(fp, ny, &off, err) : NULL;
+		head = fp != NULL ? rc__surf_read_header(fp, ny, &off, err) : NULL;
 		if (fp == NULL)
 			rc_seterr(err, "fmemopen: %s", strerror(errno));
 		else
@@ -182,7 +182,7 @@ rc_mpi_surf_read(const char *path, size_t *ny, double **local, rc_err *err)
 			st = rc_seterr(err, "MPI-IO of .surf needs a little-endian host");
 		else if (fp == NULL)
 			st = rc_seterr(err, "%s: %s", path, strerror(errno));
-		else if ((head = rc_surf_read_header(fp, ny, &offset, err)) == NULL)
+		else if ((head = rc__surf_read_header(fp, ny, &offset, err)) == NULL)
 			st = -1;
 		if (fp != NULL)
 			fclose(fp);
@@ -264,7 +264,7 @@ rc_mpi_surf_write(const rc_grid *head, size_t ny, const double *local,
 
 		if (!little_endian())
 			st = rc_seterr(err, "MPI-IO of .surf needs a little-endian host");
-		else if (fp == NULL || rc_surf_write_header(head, ny, fp, err) != 0)
+		else if (fp == NULL || rc__surf_write_header(head, ny, fp, err) != 0)
 			st = -1;
 		if (fp != NULL && fclose(fp) != 0 && st == 0)
 			st = rc_seterr(err, "out of memory");

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
- * (lib/mpi/dsolver.h); the iteration itself is lib/fire.c. */
+ * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c. */
 #include "mpi/dsolver.h"
 
 #include <math.h>
@@ -56,7 +56,8 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 	s->lx = lx;
 	s->ly = ly;
 	if (rc_elastic_init(&s->el, nx, ny, lx, ly, o->modulus,
-	    o->measure ? RC_FFT_MEASURE : RC_FFT_ESTIMATE, err) != 0) {
+	    o->fft_effort == RC_FFT_ESTIMATE ? RC_FFT_ESTIMATE : RC_FFT_MEASURE,
+	    err) != 0) {
 		free(s);
 		return NULL;
 	}

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* fuzz_rows.c - libFuzzer harness for contact-stats' row parser (rows.h).
+/* fuzz_rows.c - libFuzzer harness for contact-stats' row parser
+ * (table_read.h).
  *
  * The input is parsed strictly, leniently, a second time into the same
  * rowset (as a second file is) and through rc_rows_read from a stream.
@@ -22,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "rows.h"
+#include "table_read.h"
 
 #ifndef FUZZ_ENTRY
 #define FUZZ_ENTRY LLVMFuzzerTestOneInput

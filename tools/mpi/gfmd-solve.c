@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve (MPI build) - gfmd-solve(1) on many ranks: the indenter is
  * read from a .surf file with MPI-IO, each rank solves its rows with the
- * library's FIRE-GFMD (lib/fire.c compiled with -DRC_MPI: FFTW-MPI
+ * library's FIRE-GFMD (lib/solver_fire.c compiled with -DRC_MPI: FFTW-MPI
  * transforms, Allreduce'd sums), rank 0 writes the table, and the fields
  * go to .surf files with MPI-IO.  Options not listed in usage() are the
  * serial tool's that this build does not have; they are refused. */
@@ -21,7 +21,7 @@
 #include "mpi/dsolver.h"
 #include "mpitool.h"
 #include "solver.h"
-#include "table.h"
+#include "table_write.h"
 
 static void
 usage(void)
@@ -155,8 +155,8 @@ main(int argc, char **argv)
 	o.so.modulus = o.modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
-	o.so.measure = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
-	    RC_FFT_MEASURE;
+	o.so.fft_effort = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
+	    RC_FFT_MEASURE ? RC_FFT_MEASURE : RC_FFT_ESTIMATE;
 	plan_seconds = MPI_Wtime();
 	if ((solver = rc_mpi_solver_new(height, h->nx, ny, h->lx, h->ly, &o.so,
 	    &err)) == NULL)

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* pkcg_plastic.c - Polonsky & Keer's constrained conjugate gradient with
+/* solver_cg_plastic.c - Polonsky & Keer's constrained conjugate gradient with
  * the pressure bounded above by the hardness H (perfect plasticity):
  * 0 <= sigma <= H, mean sigma = p <= H.
  *
@@ -10,7 +10,7 @@
  *                               asperity is flattened plastically)
  * It is the minimum of the complementary energy (1/2) sigma.G sigma -
  * sigma.h over the box [0, H]^N with the mean fixed, c the multiplier of
- * the mean.  The iteration is pkcg.c's with three changes:
+ * the mean.  The iteration is solver_cg.c's with three changes:
  *   - the level c is the mean of h - G sigma over the free points
  *     F = {0 < sigma < H} (over sigma > 0 when F is empty);
  *   - the direction and step run over F, the penetrating points at zero
@@ -24,9 +24,9 @@
  *     zero pressure that penetrate (or to all at zero).
  * G sigma is recomputed after every iteration that did anything but a
  * uniform scaling (the clipping at H is not linear): about two FFT pairs
- * per iteration where pkcg.c needs one near convergence.
+ * per iteration where solver_cg.c needs one near convergence.
  *
- * Convergence: pkcg.c's measure with u' = h on F, max(v, h) at zero
+ * Convergence: solver_cg.c's measure with u' = h on F, max(v, h) at zero
  * pressure and min(v, h) at H (v = G sigma + c): the residual
  * rms(p + K u' - sigma)/p (periodic) or the gap bound (free).
  */

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* table.h - result rows written as TSV (one header line) or JSON.
+/* table_write.h - result rows written as TSV (one header line) or JSON.
  *
  * Build a row with rc_row_num/int/str, then rc_table_write it.  The first
  * row fixes the columns; later rows must have the same names in the same
@@ -9,8 +9,8 @@
  * +5, 0x10) as a string, control characters escaped and bytes that are
  * not UTF-8 as U+FFFD: always valid JSON (RFC 8259).
  */
-#ifndef RC_TABLE_H
-#define RC_TABLE_H
+#ifndef RC_TABLE_WRITE_H
+#define RC_TABLE_WRITE_H
 
 #include <stdio.h>
 #include "grid.h"

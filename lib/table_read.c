@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* rows.c - TSV and JSON result rows into one table (see rows.h). */
-#include "rows.h"
+/* table_read.c - read TSV and JSON result rows into one table (see
+ * table_read.h). */
+#include "table_read.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_rows.c - the result-row reader: TSV and JSON, union of columns,
+/* test_table_read.c - the result-row reader: TSV and JSON, union of columns,
  * file:line of every row, precise errors, lenient skipping, and random
  * garbage (every outcome must be a clean 0 or -1 with a message). */
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
 
-#include "rows.h"
+#include "table_read.h"
 #include "testlib.h"
 
 static int

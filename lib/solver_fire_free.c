@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* fire_free.c - FIRE on free boundaries: damped dynamics of the contact
- * pressures sigma >= 0 (not of the surface heights, as fire.c does on a
+/* solver_fire_free.c - FIRE on free boundaries: damped dynamics of the contact
+ * pressures sigma >= 0 (not of the surface heights, as solver_fire.c does on a
  * periodic body), with the padded compliance G (elastic_free.h) as the
  * operator and the periodic stiffness of the same grid as the inverse
  * mass, so that every mode has nearly the same frequency.
@@ -18,18 +18,18 @@
  * periodic K is wrong only for the few longest waves, where G feels the
  * edges of the area).  One iteration:
  *  1. u = G sigma (one pair of the padded 2nx x 2ny transform); c the
- *     level that makes the mean gap over {sigma > 0} zero (as in pkcg.c).
+ *     level that makes the mean gap over {sigma > 0} zero (as in solver_cg.c).
  *  2. f = -(u + c - h) on the active set: sigma > 0, or sigma = 0 with a
  *     negative gap (penetration: the force raises the pressure); f = 0
  *     elsewhere (sigma = 0 and an open gap: the bound sigma >= 0 takes the
- *     force, as the wall does in fire.c).  Convergence: the free-boundary
- *     measure of pkcg.c, k_max rms(f) / p, from this pass (the load is
+ *     force, as the wall does in solver_fire.c).  Convergence: the
+ *     free-boundary measure of solver_cg.c, k_max rms(f) / p, from this pass (the load is
  *     exact after step 5).
  *  3. a = K f (one pair of the nx x ny transform; the mean mode gets
  *     0: the mean of sigma is the load, held by step 5), then a = 0 off
  *     the active set.
- *  4. FIRE 2.0 as in fire.c, with fire.c's parameters (same meaning: time
- *     in units of the common period), P = f.v.
+ *  4. FIRE 2.0 as in solver_fire.c, with its parameters (same meaning:
+ *     time in units of the common period), P = f.v.
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* pkcg.c - Polonsky & Keer's constrained conjugate gradient (Wear 231,
+/* solver_cg.c - Polonsky & Keer's constrained conjugate gradient (Wear 231,
  * 1999, 206-219) for the pressure sigma >= 0 of mean p.
  *
  * The surface height of the elastic body under sigma is u = G sigma + c,

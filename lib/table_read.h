@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* rows.h - read result rows (TSV with one header line, or a JSON array of
- * flat objects) from any number of files into one table of named columns.
+/* table_read.h - read result rows (TSV with one header line, or a JSON
+ * array of flat objects) from any number of files into one table of named
+ * columns.
  *
  * Every cell keeps its text and, when it is a number, its value: a TSV
  * field that strtod reads whole (nan and inf included), a JSON number, or
@@ -18,8 +19,8 @@
  * values are strings, numbers, true/false (kept as text) or null; several
  * arrays one after another (files joined with cat) are read as one.
  */
-#ifndef RC_ROWS_H
-#define RC_ROWS_H
+#ifndef RC_TABLE_READ_H
+#define RC_TABLE_READ_H
 
 #include <stdio.h>
 #include "rc_err.h"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* table.c - TSV/JSON result rows. */
-#include "table.h"
+/* table_write.c - write result rows as TSV/JSON tables. */
+#include "table_write.h"
 
 #include <ctype.h>
 #include <math.h>

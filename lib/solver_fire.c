@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* fire.c - FIRE-GFMD: mass-weighted damped dynamics of the elastic surface
- * heights u(r) against a hard wall, relaxed with FIRE (Bitzek et al. 2006,
+/* solver_fire.c - FIRE-GFMD: mass-weighted damped dynamics of the elastic
+ * surface heights u(r) against a hard wall, relaxed with FIRE (Bitzek et al. 2006,
  * in the FIRE 2.0 ordering of Guenole et al. 2020: mix after the velocity
  * update), with Fourier masses m_q proportional to the stiffness k_q as in
  * Zhou, Moseler & Mueser (2019), so that every free elastic mode has the
