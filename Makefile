@@ -224,16 +224,17 @@ build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/table_read.h
 
 # make MPI=1: also the MPI builds of surfgen and gfmd-solve (lib/mpi/,
 # tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin
-# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/.  lib/solver_fire.c,
-# lib/elastic.c and lib/solver.c are compiled again with -DRC_MPI; the rest
-# of the library is the serial one.  make check-mpi tests them against the
-# serial tools with 1, 2 and 3 ranks (tests/mpi/check.sh).
+# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/: the serial library
+# as it is plus lib/mpi/*.o, whose distributed elastic operator
+# (lib/mpi/delastic.c) implements the seam of lib/elastic.h through which
+# the serial solver sums over all ranks; no object is built twice.  make
+# check-mpi tests them against the serial tools with 1, 2 and 3 ranks
+# (tests/mpi/check.sh).
 MPICC ?= mpicc
 MPI_O = build/mpi
 MPI_BIN = build/mpi/bin
 MPI_TOOLS = $(MPI_BIN)/surfgen $(MPI_BIN)/gfmd-solve
-MPI_LIB_OBJ = $(addprefix $(MPI_O)/lib/,solver_fire.o elastic.o solver.o) \
-	$(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
+MPI_LIB_OBJ = $(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
 MPI_TOOL_OBJ = $(MPI_O)/tools/mpi/mpitool.o
 .PHONY: check-mpi
 check-mpi:
@@ -243,7 +244,7 @@ ifeq ($(MPI),1)
 all: $(MPI_TOOLS)
 $(MPI_O)/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(MPICC) $(ALL_CFLAGS) -DRC_MPI -MMD -MP -c -o $@ $<
+	$(MPICC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 $(MPI_BIN)/%: $(MPI_O)/tools/mpi/%.o $(MPI_TOOL_OBJ) $(MPI_LIB_OBJ) $(COMMON_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
 	$(MPICC) $(ALL_LDFLAGS) -o $@ $^ -lfftw3_mpi $(LDLIBS)

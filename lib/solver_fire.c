@@ -80,15 +80,10 @@
 #include <math.h>
 #include <string.h>
 
-/* The MPI build (make MPI=1) runs this file on each rank's rows: s->n is
- * the local point count, s->el.n the global one, and every sum over points
- * is completed by an MPI_Allreduce (lib/mpi/decomp.h). */
-#ifdef RC_MPI
-#include "mpi/decomp.h"
-#define POINTS(s)	((double)(s)->el.n)
-#else
-#define POINTS(s)	((double)(s)->n)
-#endif
+/* A distributed operator (elastic.h, make MPI=1) runs this file on each
+ * rank's rows: s->n is the local point count, rc__points the global one,
+ * and every sum over points is completed through rc_elastic_sum. */
+#define POINTS(s)	rc__points(s)
 
 #define DT_START	1.0
 #define DT_MAX		2.0
@@ -140,17 +135,15 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power)
 		}
 		pw += f[k] * v[k];
 	}
-#ifdef RC_MPI
 	{
 		double sums[4] = { sum_d2, sum_s, (double)on, pw };
 
-		rc_mpi_sum(sums, 4);
+		rc_elastic_sum(&s->el, sums, 4);
 		sum_d2 = sums[0];
 		sum_s = sums[1];
 		on = (size_t)sums[2];
 		pw = sums[3];
 	}
-#endif
 	*n_contact = on;
 	*power = pw;
 	return rc__residual(s, p, sum_d2, sum_s);
@@ -193,9 +186,7 @@ contact_pressure(rc_solver *s, double p)
 		sum += s->u[k] * s->sigma[k];
 		s->sigma[k] = s->contact[k] ? p + s->sigma[k] : 0;
 	}
-#ifdef RC_MPI
-	rc_mpi_sum(&sum, 1);
-#endif
+	rc_elastic_sum(&s->el, &sum, 1);
 	return 0.5 * sum / POINTS(s);
 }
 
@@ -217,9 +208,7 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		for (k = 0; k < n; k++)
 			if (h[k] > top)
 				top = h[k];
-#ifdef RC_MPI
-		rc_mpi_max(&top, 1);
-#endif
+		rc_elastic_max(&s->el, &top, 1);
 		for (k = 0; k < n; k++)
 			u[k] = top;
 		s->have_u = 1;
@@ -279,16 +268,14 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				vv += v[k] * v[k];
 			}
 		}
-#ifdef RC_MPI
 		{
 			double sums[3] = { aa, av, vv };
 
-			rc_mpi_sum(sums, 3);
+			rc_elastic_sum(&s->el, sums, 3);
 			aa = sums[0];
 			av = sums[1];
 			vv = sums[2];
 		}
-#endif
 		mix_v = 1;
 		mix_a = 0;
 		if (aa > 0) {

@@ -35,6 +35,9 @@ struct rc_solver {
 	double k_uniform;	/* a layer: k_0 (layer.h); +inf: half space */
 };
 
+/* The number of points of the whole grid: s->n, or the global count of a
+ * distributed operator (elastic.h), whose s->n is this process's rows. */
+double rc__points(const rc_solver *s);
 /* Both methods' convergence measure (see solver.c) from the sum over all
  * points of (p + K u - sigma)^2 and the sum of sigma. */
 double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma);

@@ -1,7 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve - contact of a linearly elastic half space on a rigid rough
  * indenter, one result row per pressure (see gfmd-solve(1)). */
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <signal.h>
@@ -606,11 +605,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 	rc_err err;
 	int st;
 
-	*p = o->napproach ? NAN : o->nreduced ?
-	    o->reduced[k] * o->modulus * r->gbar : o->absolute[k];
-	/* Echo a requested p* exactly: p/(E* gbar) rounds. */
-	*p_star = o->nreduced ? o->reduced[k] :
-	    r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
+	gfmd_pressure(o, k, r->gbar, p, p_star);
 	r->pr.p = *p;
 	r->pr.p_star = *p_star;
 	/* A periodic checkpoint stops the solve through o->so.stop; it is
@@ -682,29 +677,15 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .thickness = o->so.thickness,
 		    .substrate = o->so.substrate, .poisson = o->so.poisson,
 		    .nx = h->nx, .ny = h->ny };
-		const char *why = gfmd_kappa_c_why(&in);
+		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
+		    &r->table, r->out.fp, &r->nunconverged, &err);
 
-		if (why != NULL)
-			tool_warn(&r->t, "p = %g: kappa_c written as nan: %s", p, why);
-		if (gfmd_result_row(&r->row, &in) != 0) {
+		if (w != 0) {
 			rc_atomic_abort(&r->out);
-			tool_fail(&r->t, "out of memory");
+			if (w == GFMD_ROW_NOMEM)
+				tool_fail(&r->t, "out of memory");
+			tool_fail_at(&r->t, r->t.out, err.msg);
 		}
-	}
-	if (rc_table_write(&r->table, &r->row, &err) != 0) {
-		rc_atomic_abort(&r->out);
-		tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output", err.msg);
-	}
-	if (fflush(r->out.fp) != 0) {
-		rc_atomic_abort(&r->out);
-		tool_fail(&r->t, "%s: %s", r->t.out ? r->t.out : "standard output",
-		    strerror(errno));
-	}
-	if (!res->converged) {
-		r->nunconverged++;
-		tool_warn(&r->t, "p = %g: not converged after %ld iterations "
-		    "(residual %.3g, tolerance %.3g); row written, going on",
-		    p, res->iterations, res->residual, o->so.tol);
 	}
 	r->last_p = p;
 	r->last_p_star = p_star;

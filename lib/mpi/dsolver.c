@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
- * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c. */
+ * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c, the
+ * serial library's, running on the distributed operator of delastic.c. */
 #include "mpi/dsolver.h"
 
 #include <math.h>
@@ -11,6 +12,7 @@
 #include "contact.h"
 #include "kappa.h"
 #include "mpi/decomp.h"
+#include "mpi/delastic.h"
 #include "mpi/dpatches.h"
 #include "mpi/dspectral.h"
 #include "solver_impl.h"
@@ -55,7 +57,7 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 	s->n = n;
 	s->lx = lx;
 	s->ly = ly;
-	if (rc_elastic_init(&s->el, nx, ny, lx, ly, o->modulus,
+	if (rc_mpi_elastic_init(&s->el, nx, ny, lx, ly, o->modulus,
 	    o->fft_effort == RC_FFT_ESTIMATE ? RC_FFT_ESTIMATE : RC_FFT_MEASURE,
 	    err) != 0) {
 		free(s);
