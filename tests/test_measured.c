@@ -82,10 +82,10 @@ test_common_unit(void)
 	    a->lx == 10 && fabs(a->z[3] - 0.1 * (sin(2.1) + 0.3)) < 1e-15,
 	    "values now in um, size kept");
 	test_true(rc_grid_to_common_unit(b, NULL, &err) == 0, "m x m is a no-op");
-	test_rel(rc_gbar_fd(a), rc_gbar_fd(b), 1e-13, "gbar of um x nm = gbar in m");
+	test_rel(rc_gbar_forward(a), rc_gbar_forward(b), 1e-13, "gbar of um x nm = gbar in m");
 	test_true(rc_grid_to_common_unit(a, "nm", &err) == 0 && a->lx == 10000 &&
 	    strcmp(a->unit, "nm") == 0, "--unit nm converts sizes");
-	test_rel(rc_gbar_fd(a), rc_gbar_fd(b), 1e-13, "gbar unchanged in nm");
+	test_rel(rc_gbar_forward(a), rc_gbar_forward(b), 1e-13, "gbar unchanged in nm");
 
 	/* Heights that are not lengths are refused, naming the unit. */
 	strcpy(b->z_unit, "deg");

@@ -96,7 +96,7 @@ test_cosine(void)
 	test_rel(s.nayak, 1, EXACT, "cosine nayak = 1");
 	/* Finite differences: forward rms 2 sin(k dx/2)/dx, central sin(k dx)/dx. */
 	double dx = lx / 64;
-	test_rel(rc_gbar_fd(g), amp * 2 * sin(k * dx / 2) / dx / sqrt(2), EXACT,
+	test_rel(rc_gbar_forward(g), amp * 2 * sin(k * dx / 2) / dx / sqrt(2), EXACT,
 	    "cosine gbar_fd (forward differences)");
 	stats_of(g, NULL, RC_DERIV_FD, &s);
 	test_rel(s.gbar, amp * sin(k * dx) / dx / sqrt(2), EXACT,

@@ -16,6 +16,7 @@
 #include "common.h"
 #include "contact.h"
 #include "fft.h"
+#include "gradient.h"
 #include "gfmd_opts.h"
 #include "gfmd_row.h"
 #include "png.h"
@@ -411,9 +412,9 @@ indenter_setup(struct run *r)
 	 * boundaries need none. */
 	memset(&r->fft, 0, sizeof(r->fft));
 	if (o->so.boundary == RC_BOUNDARY_FREE)
-		r->gbar = rc_contact_gbar_open(h);
+		r->gbar = rc_gbar_open(h);
 	else if (o->fd)
-		r->gbar = rc_contact_gbar_fd(h);
+		r->gbar = rc_gbar_central(h);
 	else if (rc_fft_init(&r->fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &r->fft, &r->gbar, &err) != 0)
 		tool_fail(&r->t, "%s", err.msg);

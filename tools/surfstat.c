@@ -248,7 +248,7 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	num(t, &r, "mean", s.mean);
 	num(t, &r, "hrms", s.hrms);
 	num(t, &r, "gbar", gbar);
-	num(t, &r, "gbar_fd", rc_gbar_fd(g));
+	num(t, &r, "gbar_fd", rc_gbar_forward(g));
 	num(t, &r, "rms_laplacian", s.rms_laplacian);
 	num(t, &r, "skewness", s.skewness);
 	num(t, &r, "kurtosis", s.kurtosis);
