@@ -83,8 +83,10 @@ TOOLS    = $(TOOL_SRC:tools/%.c=$(BIN)/%)
 COMMON_OBJ = $(TOOL_SHARED:%.c=$(O)/%.o)
 TEST_SRC = $(wildcard tests/test_*.c)
 TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
-# free_cases: the closed-form free-boundary problems, also bench_free's
-TESTLIB_OBJ = $(O)/tests/testlib.o $(O)/tests/free_cases.o
+# free_cases: the closed-form free-boundary problems, also bench_free's;
+# rough_cases: the rough surface and solver set-up, also bench_gfmd's
+TESTLIB_OBJ = $(O)/tests/testlib.o $(O)/tests/free_cases.o \
+	$(O)/tests/rough_cases.o
 MAN1 = $(wildcard man/man1/*.1)
 MAN3 = $(wildcard man/man3/*.3)
 MAN5 = $(wildcard man/man5/*.5)
@@ -116,6 +118,8 @@ $(O)/tests/test_%: $(O)/tests/test_%.o $(TESTLIB_OBJ) $(LIB)
 $(O)/bench/bench_%: $(O)/bench/bench_%.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 $(O)/bench/bench_free: $(O)/bench/bench_free.o $(O)/tests/free_cases.o $(LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+$(O)/bench/bench_gfmd: $(O)/bench/bench_gfmd.o $(O)/tests/rough_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
 check: $(TOOLS) $(TESTS)

@@ -36,7 +36,6 @@
 #include <string.h>
 
 #define PROGRESS_EVERY	50
-#define CHECK_EVERY	100
 #define TRUST	0.5
 
 /* The admissible u' of the top from v = u + c. */
@@ -251,7 +250,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 	double g_old = 1, c = 0, residual = HUGE_VAL, bound;
 	double g00 = 0, inv_n = 1.0 / (double)n;
 	long it;
-	int stale = 1, conjugate = 0, status = 1;
+	int stale = 1, conjugate = 0, status = 1, next;
 
 	if (p > H)
 		return rc_seterr(err, "pressure %g exceeds the hardness %g: no "
@@ -281,19 +280,11 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 			}
 		}
 		bound = k_max * sqrt(viol * inv_n) / p;
-		if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-		    (s->opts.stop && *s->opts.stop)) {
-			residual = plastic_check(s, p);
-			if (residual <= s->opts.tol)
-				status = 0;
+		next = rc__cg_next(s, p, bound, it, plastic_check, &residual,
+		    &status);
+		if (next == RC__CG_STOP)
 			break;
-		}
-		if (it > 0 && it % CHECK_EVERY == 0) {
-			residual = plastic_check(s, p);
-			if (residual <= s->opts.tol) {
-				status = 0;
-				break;
-			}
+		if (next == RC__CG_STALE) {
 			stale = 1;
 			continue;
 		}

@@ -62,6 +62,13 @@ int rc__cg_alloc(rc_solver *s, rc_err *err);
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
+/* The stopping rule of both CG variants (solver_cg.c), after iteration it
+ * has its gap bound: STOP (the final check ran: *residual, and *status 0
+ * if it met opts.tol), STALE (a periodic check of the residual itself
+ * ran and missed: the iterate must be recomputed) or GO. */
+enum { RC__CG_GO, RC__CG_STOP, RC__CG_STALE };
+int rc__cg_next(rc_solver *s, double p, double bound, long it,
+    double (*check)(rc_solver *, double), double *residual, int *status);
 /* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
