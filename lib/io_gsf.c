@@ -53,6 +53,7 @@ put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
 	return put_prefixed(fp, len, "", key, val, err);
 }
 
+/* Long: the GSF fields in the order the format defines them. */
 int
 rc__gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
@@ -164,6 +165,8 @@ standard(const char *key)
 	return 0;
 }
 
+/* Long: the GSF fields in the order the format defines them, each checked
+ * where read; the unit rules of our own files need them all at once. */
 rc_grid *
 rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {

@@ -242,6 +242,8 @@ check_trailing(rc_in *in, rc_err *err)
 	return 0;
 }
 
+/* Long: the two ways in (a file of known size, a pipe read piece by
+ * piece) share the decoding and the error paths. */
 rc_grid *
 rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
     const rc_layout *l, rc_err *err)

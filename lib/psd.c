@@ -232,6 +232,8 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 	    bins, nbins, err);
 }
 
+/* Long: window, transform and radial binning share the spectrum buffer
+ * and the bin counts. */
 int
 rc_psd_radial_window(const rc_grid *g, rc_fft *fft, double bins_per_decade,
     enum rc_window window, rc_psd_bin **bins, size_t *nbins, rc_err *err)
@@ -461,6 +463,8 @@ out:
 	return rc;
 }
 
+/* Long: the zero-padded transforms of the heights and of the mask share
+ * their buffers. */
 static int
 acf_nonperiodic(const rc_grid *g, int half, rc_acf_point **pts, size_t *npts,
     rc_err *err)
@@ -572,6 +576,8 @@ rc_acf_ex(const rc_grid *g, rc_fft *fft, int half, rc_acf_point **pts,
 	return rc;
 }
 
+/* Long: transform, radial averaging and normalisation share the spectrum
+ * buffer. */
 static int
 acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
     rc_err *err)
@@ -657,6 +663,8 @@ out:
 	return rc;
 }
 
+/* Long: window, row transforms and averaging share the buffers of one
+ * axis. */
 int
 rc_psd1d(const rc_grid *g, enum rc_psd1d_dir dir, enum rc_window window,
     rc_psd1d_point **pts, size_t *npts, rc_err *err)

@@ -91,6 +91,8 @@ rc_method_parse(const char *name)
 	return -1;
 }
 
+/* Long: every option is checked here, together, before anything is
+ * allocated. */
 rc_solver *
 rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 {

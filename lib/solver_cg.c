@@ -232,6 +232,8 @@ rc__cg_initial_pressure(rc_solver *s, double p)
 	rc__sigma_to_load(s, p);
 }
 
+/* Long: one Polonsky-Keer iteration: its passes share the sums and the
+ * conjugate direction. */
 int
 rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {

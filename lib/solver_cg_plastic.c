@@ -91,6 +91,8 @@ plastic_level(const rc_solver *s, double *c)
  * scaled, those that reach H moved to H, until the mean is p.  disp holds
  * G sigma (or NULL); returns 1 if G sigma is now stale, 0 if the change
  * was a uniform scale (applied to disp too). */
+/* Long: the bisection on the level and the clamp at 0 and H share the
+ * pressure bounds. */
 static int
 restore_load(rc_solver *s, double p, double *disp)
 {
@@ -237,6 +239,8 @@ active(double sigma, double g, double H)
 	    (sigma >= H && g > 0);
 }
 
+/* Long: one bounded-pressure CG iteration: its passes share the sums and
+ * the conjugate direction. */
 int
 rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err)

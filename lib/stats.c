@@ -300,6 +300,9 @@ rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
 	return rc;
 }
 
+/* Long: three reduction passes over one derivative buffer, ordered to
+ * need one field at a time; split, their dozen sums would travel in a
+ * struct. */
 static int
 stats_compute(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err)

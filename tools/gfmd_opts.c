@@ -57,6 +57,7 @@ static const struct option all_longopts[] = {
 	{ NULL, 0, NULL, 0 }
 };
 
+/* Long: one case per option, each a few lines; they are read together. */
 void
 gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
     char **argv)
@@ -186,6 +187,8 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 	}
 }
 
+/* Long: every check between options in one place, so that all problems
+ * are reported together. */
 void
 gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 {

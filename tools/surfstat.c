@@ -576,6 +576,7 @@ choose_table(struct stat_opts *so, enum table table)
 }
 
 /* One option c of getopt_long. */
+/* Long: one case per option, each a few lines; they are read together. */
 static void
 stat_option(struct tool *t, struct stat_opts *so, int c, const char *arg,
     char **argv)
