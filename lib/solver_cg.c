@@ -133,7 +133,7 @@ double
 rc__final_check_free(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
 	double *u = s->u;
 	const double *h = s->height, *sigma = s->sigma;
 
@@ -149,9 +149,18 @@ rc__final_check_free(rc_solver *s, double p)
 		sum_e += sigma[k] * u[k];
 		u[k] = up;
 	}
-	s->energy = 0.5 * sum_e / (double)n;
-	force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
-	load = fabs(sum_s / (double)n - p) / p;
+	return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
+}
+
+double
+rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
+    double sum_e)
+{
+	double n = (double)s->n, force, load;
+
+	s->energy = 0.5 * sum_e / n;
+	force = rc__stiffness_max(s) * sqrt(sum_d2 / n) / p;
+	load = fabs(sum_s / n - p) / p;
 	return force > load ? force : load;
 }
 

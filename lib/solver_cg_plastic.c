@@ -196,8 +196,6 @@ plastic_check(rc_solver *s, double p)
 	plastic_level(s, &c);
 	s->level = c;
 	if (s->free_bc) {
-		double force, load;
-
 		for (k = 0; k < n; k++) {
 			double v = u[k] + c, up = admissible(v, h[k], sigma[k], H);
 
@@ -207,10 +205,7 @@ plastic_check(rc_solver *s, double p)
 			sum_e += sigma[k] * u[k];
 			u[k] = up;
 		}
-		s->energy = 0.5 * sum_e / (double)n;
-		force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
-		load = fabs(sum_s / (double)n - p) / p;
-		return force > load ? force : load;
+		return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
 	} else {
 		double *ku = s->el.fft.real;
 

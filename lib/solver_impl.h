@@ -53,6 +53,11 @@ int rc__fire_alloc(rc_solver *s, rc_err *err);
  * (solver_fire_free.c). */
 size_t rc__level(const rc_solver *s, double *c);
 double rc__final_check_free(rc_solver *s, double p);
+/* That measure, max(k_max rms(u' - u) / p, |<sigma> - p| / p), from the
+ * sums over all points of (u' - u)^2, sigma and sigma u; sets the
+ * elastic energy (1/2) <sigma u>.  Both CG variants. */
+double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
+    double sum_e);
 double rc__stiffness_max(const rc_solver *s);
 int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
