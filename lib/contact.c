@@ -210,12 +210,8 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 		st->gbar_c_prime = rc_signed_root(sum);
 		return 0;
 	}
-	memset(&own, 0, sizeof(own));
-	if (fft == NULL) {
-		if (rc_fft_init(&own, nx, ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = &own;
-	}
+	if ((fft = rc_fft_borrow(fft, &own, nx, ny, err)) == NULL)
+		return -1;
 	if (rc_spectral_deriv(h, fft, RC_DERIV_X, err) != 0)
 		goto out;
 	sum = masked_sum_sq(fft->real, contact, nx, ny);

@@ -261,6 +261,20 @@ rc_fft_free(rc_fft *f)
 	memset(f, 0, sizeof(*f));
 }
 
+rc_fft *
+rc_fft_borrow(rc_fft *given, rc_fft *own, size_t nx, size_t ny, rc_err *err)
+{
+	memset(own, 0, sizeof(*own));
+	if (given == NULL)
+		return rc_fft_init(own, nx, ny, RC_FFT_ESTIMATE, err) != 0 ? NULL : own;
+	if (given->nx != nx || given->ny != ny) {
+		rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
+		    given->nx, given->ny, nx, ny);
+		return NULL;
+	}
+	return given;
+}
+
 void
 rc_fft_forward(rc_fft *f)
 {

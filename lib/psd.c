@@ -98,13 +98,8 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 		return rc_seterr(err, "the grid has missing points: a spectrum "
 		    "needs every point (fill them with surfwarp --fill)");
 	window = rc_window_resolve(g, window);
-	if (fft == NULL) {
-		if (rc_fft_init(own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	memcpy(fft->real, g->z, n * sizeof(double));
 	if (demean || window != RC_WINDOW_NONE) {
 		double mean;

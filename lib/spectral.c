@@ -34,13 +34,8 @@ ordered_sum(const double *partial)
 static int
 transform(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, rc_err *err)
 {
-	if (fft == NULL) {
-		if (rc_fft_init(own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	memcpy(fft->real, g->z, rc_grid_size(g) * sizeof(double));
 	rc_fft_forward(fft);
 	*use = fft;
@@ -84,11 +79,11 @@ int
 rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
     rc_err *err)
 {
-	rc_fft *f;
+	rc_fft own, *f;
 
 	if (fft == NULL)
 		return rc_seterr(err, "internal: rc_spectral_deriv needs a plan");
-	if (transform(g, fft, NULL, &f, err) != 0)
+	if (transform(g, fft, &own, &f, err) != 0)
 		return -1;
 	rc_deriv_spectral(f->spec, f->spec, which, g->nx, g->ny, g->lx, g->ly, 0,
 	    g->ny);

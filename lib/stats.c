@@ -53,14 +53,8 @@ spectral_fields(const rc_grid *g, rc_fft *fft, double *out[F_COUNT],
 	double complex *spec0;
 	int rc = -1;
 
-	memset(&own, 0, sizeof(own));
-	if (fft == NULL) {
-		if (rc_fft_init(&own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = &own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, &own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	nspec = fft->nxc * g->ny;
 	/* The backward transform destroys its input: keep the spectrum. */
 	if ((spec0 = fftw_alloc_complex(nspec)) == NULL) {

@@ -29,7 +29,7 @@
 static rc_grid *
 cosine(size_t nx, size_t ny, double lx, double ly, int mx, int my, double amp)
 {
-	rc_grid *g = test_grid(nx, ny, lx, ly);
+	rc_grid *g = test_new_grid(nx, ny, lx, ly);
 	double kx = 2 * M_PI * mx / lx, ky = 2 * M_PI * my / ly;
 
 	for (size_t j = 0; j < ny; j++)
@@ -109,7 +109,7 @@ test_cosine(void)
 	rc_grid_free(g);
 
 	/* Flat: every normalised quantity NaN, no crash. */
-	g = test_grid(8, 8, 1, 1);
+	g = test_new_grid(8, 8, 1, 1);
 	stats_of(g, NULL, RC_DERIV_SPECTRAL, &s);
 	test_true(isnan(s.phi[1]) && isnan(s.phi[9]) && isnan(s.skewness) &&
 	    s.gbar == 0 && s.hrms == 0, "flat surface: phi NaN, gbar = hrms = 0");
@@ -122,7 +122,7 @@ static void
 test_eggbox(void)
 {
 	size_t n = 32;
-	rc_grid *g = test_grid(n, n, 1, 1);
+	rc_grid *g = test_new_grid(n, n, 1, 1);
 	rc_stats s;
 
 	for (size_t j = 0; j < n; j++)
@@ -154,7 +154,7 @@ rpa_surface(size_t n, double l, int kmin, int kmax, double hurst,
 {
 	rc_fft f;
 	rc_err err;
-	rc_grid *g = test_grid(n, n, l, l);
+	rc_grid *g = test_new_grid(n, n, l, l);
 	gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
 	size_t nxc = n / 2 + 1;
 
@@ -302,7 +302,7 @@ test_mask(void)
 {
 	size_t nx = 40, ny = 10;
 	double amp = 0.5, lx = 1, k = 2 * M_PI * 2 / lx;
-	rc_grid *g = cosine(nx, ny, lx, 1, 2, 0, amp), *mask = test_grid(nx, ny, 1, 1);
+	rc_grid *g = cosine(nx, ny, lx, 1, 2, 0, amp), *mask = test_new_grid(nx, ny, 1, 1);
 	rc_stats s, full;
 	rc_err err;
 	double mean = 0, c = 0, gx2 = 0, m2 = 0, dlap = 0, lap = 0;
@@ -362,7 +362,7 @@ test_mask(void)
 	test_true(rc_stats_compute(g, mask, RC_DERIV_SPECTRAL, &s, &err) != 0 &&
 	    strstr(err.msg, "no point"), "empty mask rejected (%s)", err.msg);
 	rc_grid_free(mask);
-	mask = test_grid(nx, ny + 1, 1, 1);
+	mask = test_new_grid(nx, ny + 1, 1, 1);
 	test_true(rc_stats_compute(g, mask, RC_DERIV_SPECTRAL, &s, &err) != 0 &&
 	    strstr(err.msg, "40x11"), "wrong-size mask rejected (%s)", err.msg);
 	rc_grid_free(mask);
@@ -602,7 +602,7 @@ test_acf(void)
 {
 	size_t nx = 12, ny = 10;
 	double lx = 1.2, ly = 1;
-	rc_grid *g = test_grid(nx, ny, lx, ly);
+	rc_grid *g = test_new_grid(nx, ny, lx, ly);
 	rc_acf_point *pts;
 	size_t np;
 	rc_err err;

@@ -143,7 +143,7 @@ test_put_file(const char *path, const void *p, size_t n)
 }
 
 rc_grid *
-test_grid(size_t nx, size_t ny, double lx, double ly)
+test_new_grid(size_t nx, size_t ny, double lx, double ly)
 {
 	rc_err err;
 	rc_grid *g = rc_grid_new(nx, ny, lx, ly, &err);

@@ -43,6 +43,6 @@ const char *test_slot_path(int slot, const char *name);
 /* Write n bytes to path (abort on failure: set-up, not the test). */
 void test_put_file(const char *path, const void *p, size_t n);
 /* rc_grid_new, the program ended after a message when it fails. */
-rc_grid *test_grid(size_t nx, size_t ny, double lx, double ly);
+rc_grid *test_new_grid(size_t nx, size_t ny, double lx, double ly);
 
 #endif
