@@ -234,50 +234,58 @@ rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out)
 	e->n_c2r++;
 }
 
-/* spec *= factor(k) / N, factor(0) = 0, on the real and imaginary parts
- * as doubles (a complex-times-real product may be compiled as a full
- * complex one, which the vectoriser leaves alone); the products are the
- * same.  K: k/N is 0 at k = 0 without a branch. */
+/* A distributed operator's spectrum times the multiplier mu (fft.h:
+ * k_q scale, or scale / k_q and at_zero at k_q = 0), on the real and
+ * imaginary parts as doubles (a complex-times-real product may be
+ * compiled as a full complex one, which the vectoriser leaves alone); the
+ * products are rc_fft_convolve's. */
 static void
-scale_spec(rc_elastic *e, int inverse)
+dist_multiply(rc_elastic *e, const rc_fft_multiplier *mu)
 {
 	size_t m, nm = e->nxc * e->ny;
-	double inv_n = 1.0 / (double)e->n, *z = (double *)e->fft.spec;
-	const double *k = e->stiffness;
+	double *z = (double *)e->fft.spec;
+	const double *k = mu->k;
 
-	if (!inverse) {
-#pragma omp parallel for schedule(static)
-		for (m = 0; m < nm; m++) {
-			double f = k[m] * inv_n;
-
-			z[2 * m] *= f;
-			z[2 * m + 1] *= f;
-		}
-		return;
-	}
 #pragma omp parallel for schedule(static)
 	for (m = 0; m < nm; m++) {
-		double f = k[m] > 0 ? 1.0 / k[m] * inv_n : 0;
+		double c = !mu->inverse ? k[m] * mu->scale :
+		    k[m] > 0 ? mu->scale / k[m] : mu->at_zero;
 
-		z[2 * m] *= f;
-		z[2 * m + 1] *= f;
+		z[2 * m] *= c;
+		z[2 * m + 1] *= c;
 	}
 }
 
 void
 rc_elastic_force(rc_elastic *e, const double *u, double *out)
 {
-	rc_elastic_r2c(e, u, e->fft.spec);
-	scale_spec(e, 0);
-	rc_elastic_c2r(e, e->fft.spec, out);
+	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 0, 0 };
+
+	rc_elastic_convolve(e, u, out, &mu);
 }
 
 void
 rc_elastic_displacement(rc_elastic *e, const double *sigma, double *out)
 {
-	rc_elastic_r2c(e, sigma, e->fft.spec);
-	scale_spec(e, 1);
-	rc_elastic_c2r(e, e->fft.spec, out);
+	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 1, 0 };
+
+	rc_elastic_convolve(e, sigma, out, &mu);
+}
+
+void
+rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
+    const rc_fft_multiplier *mu)
+{
+	if (e->dist != NULL) {
+		/* the distributed transforms, through the seam */
+		rc_elastic_r2c(e, in, e->fft.spec);
+		dist_multiply(e, mu);
+		rc_elastic_c2r(e, e->fft.spec, out);
+		return;
+	}
+	rc_fft_convolve(&e->fft, in, out, mu);
+	e->n_r2c++;
+	e->n_c2r++;
 }
 
 double
