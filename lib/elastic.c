@@ -234,28 +234,6 @@ rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out)
 	e->n_c2r++;
 }
 
-/* A distributed operator's spectrum times the multiplier mu (fft.h:
- * k_q scale, or scale / k_q and at_zero at k_q = 0), on the real and
- * imaginary parts as doubles (a complex-times-real product may be
- * compiled as a full complex one, which the vectoriser leaves alone); the
- * products are rc_fft_convolve's. */
-static void
-dist_multiply(rc_elastic *e, const rc_fft_multiplier *mu)
-{
-	size_t m, nm = e->nxc * e->ny;
-	double *z = (double *)e->fft.spec;
-	const double *k = mu->k;
-
-#pragma omp parallel for schedule(static)
-	for (m = 0; m < nm; m++) {
-		double c = !mu->inverse ? k[m] * mu->scale :
-		    k[m] > 0 ? mu->scale / k[m] : mu->at_zero;
-
-		z[2 * m] *= c;
-		z[2 * m + 1] *= c;
-	}
-}
-
 void
 rc_elastic_force(rc_elastic *e, const double *u, double *out)
 {
@@ -279,7 +257,7 @@ rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
 	if (e->dist != NULL) {
 		/* the distributed transforms, through the seam */
 		rc_elastic_r2c(e, in, e->fft.spec);
-		dist_multiply(e, mu);
+		rc_fft_multiply(e->fft.spec, e->nxc * e->ny, mu);
 		rc_elastic_c2r(e, e->fft.spec, out);
 		return;
 	}

@@ -128,6 +128,10 @@ int rc_fft_conv_init(rc_fft *f, enum rc_fft_effort effort, size_t min_points,
     rc_err *err);
 void rc_fft_convolve(rc_fft *f, const double *in, double *out,
     const rc_fft_multiplier *m);
+/* spec[m] *= c_q for the nm half-complex values of spec and the table
+ * mu->k of the same layout (the unblocked convolution's step; also the
+ * distributed operator's, elastic.c). */
+void rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu);
 /* 1 if f takes the blocked path. */
 int rc_fft_conv_blocked(const rc_fft *f);
 /* The blocked path's stages, for a caller that works on each block of
