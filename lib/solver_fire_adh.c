@@ -174,6 +174,11 @@ shift_to_mean(rc_solver *s, double target)
 	}
 	/* The mean is non-decreasing in c, at least target at c = target -
 	 * umin and tends to <h> < target as c falls: bracket, bisect. */
+	/* already there (a warm start at the same approach): keep the
+	 * contact points on the wall, which any shift up would lift */
+	if (fabs(shifted_mean(s, 0) - target) <= 1e-14 * (fabs(target) +
+	    umax - umin))
+		return;
 	hi = target - umin;
 	lo = target - umax;
 	for (it = 0; it < 200 && shifted_mean(s, lo) > target; it++)
