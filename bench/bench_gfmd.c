@@ -24,6 +24,11 @@
  * on a bonded elastic layer of thickness L/8, nu = 0.3 (gfmd-solve
  * --thickness; lib/layer.h): the cost of a finite thickness against the
  * half space's rows (a_r error again against the half space).
+ * One more, fire-adh (periodic only), adds the exponential adhesion of
+ * gfmd-solve --adhesion (lib/adhesion.h) with range rho = dx and
+ * sigma_max = dgamma / rho = p (l_adh = 20 dx, resolved): the cost of
+ * adhesion against the fire row (a_r error against the non-adhesive
+ * reference: the effect).
  *
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
@@ -143,8 +148,8 @@ surface(size_t n)
  * message), its result and the process CPU seconds of the solve. */
 static rc_solver *
 solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
-    double tol, double hardness, double thickness, rc_solve_result *r,
-    double *cpu)
+    double tol, double hardness, double thickness, int adhesive,
+    rc_solve_result *r, double *cpu)
 {
 	rc_solver_opts o;
 	rc_solver *s;
@@ -159,6 +164,10 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 		o.thickness = thickness;
 		o.substrate = RC_SUBSTRATE_BONDED;
 		o.poisson = 0.3;
+	}
+	if (adhesive) {
+		o.range = g->lx / (double)g->nx;
+		o.adhesion = 0.05 * o.range;
 	}
 	if (tol > 0)
 		o.tol = tol;
@@ -189,19 +198,19 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	int m;
 
 	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
-	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, &r, &cpu)) == NULL)
+	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, 0, &r, &cpu)) == NULL)
 		return -1;
 	ref = contact_fraction(s, nn);
 	rc_solver_free(s);
-	for (m = 0; m < (b == RC_BOUNDARY_PERIODIC ? 5 : 3); m++) {
+	for (m = 0; m < (b == RC_BOUNDARY_PERIODIC ? 6 : 3); m++) {
 		static const char *const name[] = { "fire", "cg", "cg-plastic",
-			"fire-layer", "cg-layer" };
-		enum rc_method method = m == 0 || m == 3 ? RC_METHOD_FIRE :
-		    RC_METHOD_CG;
+			"fire-layer", "cg-layer", "fire-adh" };
+		enum rc_method method = m == 0 || m == 3 || m == 5 ?
+		    RC_METHOD_FIRE : RC_METHOD_CG;
 		double ar, iters;
 
 		if ((s = solve(g, method, b, 0, m == 2 ? 4 * 0.05 : 0,
-		    m >= 3 ? 1.0 / 8 : 0, &r, &cpu)) == NULL)
+		    m == 3 || m == 4 ? 1.0 / 8 : 0, m == 5, &r, &cpu)) == NULL)
 			return -1;
 		ar = contact_fraction(s, nn);
 		iters = (double)(r.iterations ? r.iterations : 1);
@@ -285,7 +294,7 @@ contention(void)
 				if (pid < 0)
 					return 1;
 				rc_fft_set_threads(j == 0 ? 0 : 1);
-				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0, &r, &cpu);
+				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0, 0, &r, &cpu);
 				if (pid > 0)
 					competitor_stop(pid);
 				if (s == NULL)

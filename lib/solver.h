@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver.h - frictionless, non-adhesive contact of a linearly elastic
+/* solver.h - frictionless contact (non-adhesive unless opts.adhesion:
+ * adhesion.h, solver_fire_adh.c) of a linearly elastic
  * half space (above) on a rigid indenter of heights h (below), either
  * periodic (the grid is one cell of an infinite periodic surface) or with
  * free boundaries (the grid is an isolated patch of an infinite half
