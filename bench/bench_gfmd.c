@@ -29,6 +29,10 @@
  * sigma_max = dgamma / rho = p (l_adh = 20 dx, resolved): the cost of
  * adhesion against the fire row (a_r error against the non-adhesive
  * reference: the effect).
+ * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
+ * the blocked transforms (fft.h) and FIRE runs its passes block by block
+ * between them (solver_fire.c), fire-plain and cg-plain solve the same
+ * map with FFTW's whole-grid pair and separate passes: the gain.
  *
  * Both boundary kinds side by side (column boundary): free boundaries
  * (lib/elastic_free.c) solve the same map as an isolated patch; their
@@ -47,6 +51,7 @@
  * line says: run `make bench` without -j to measure two.
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -148,8 +153,8 @@ surface(size_t n)
  * message), its result and the process CPU seconds of the solve. */
 static rc_solver *
 solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
-    double tol, double hardness, double thickness, int adhesive,
-    rc_solve_result *r, double *cpu)
+    double tol, double hardness, double thickness, size_t block_points,
+    int adhesive, rc_solve_result *r, double *cpu)
 {
 	rc_solver_opts o;
 	rc_solver *s;
@@ -160,6 +165,7 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 	o.method = method;
 	o.boundary = boundary;
 	o.hardness = hardness;
+	o.fft_block_points = block_points;
 	if (thickness > 0) {
 		o.thickness = thickness;
 		o.substrate = RC_SUBSTRATE_BONDED;
@@ -185,6 +191,26 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 	return s;
 }
 
+/* The method rows: the plain solves, plasticity, a layer, adhesion, and from
+ * RC_FFT_BLOCKED_POINTS on the periodic solves again with FFTW's whole-grid
+ * transforms and separate passes (fire-plain, cg-plain) for the gain of
+ * the blocked ones. */
+static const struct bench_row {
+	const char *name;
+	enum rc_method method;
+	double hardness_over_p, thickness;
+	int free_too, plain, adhesive;
+} rows[] = {
+	{ "fire", RC_METHOD_FIRE, 0, 0, 1, 0, 0 },
+	{ "cg", RC_METHOD_CG, 0, 0, 1, 0, 0 },
+	{ "cg-plastic", RC_METHOD_CG, 4, 0, 1, 0, 0 },
+	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0, 0 },
+	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0, 0 },
+	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 0, 0, 1 },
+	{ "fire-plain", RC_METHOD_FIRE, 0, 0, 0, 1, 0 },
+	{ "cg-plain", RC_METHOD_CG, 0, 0, 0, 1, 0 },
+};
+
 /* One boundary kind on the map g of n x n points: the reference (FIRE at
  * tol 1e-10), then both methods; a row each.  Free boundaries count pairs
  * of the padded 2n x 2n transform and compare with a padded pair. */
@@ -198,25 +224,28 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	int m;
 
 	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
-	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, 0, &r, &cpu)) == NULL)
+	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, RC_FFT_BLOCKED_POINTS,
+	    0, &r, &cpu)) == NULL)
 		return -1;
 	ref = contact_fraction(s, nn);
 	rc_solver_free(s);
-	for (m = 0; m < (b == RC_BOUNDARY_PERIODIC ? 6 : 3); m++) {
-		static const char *const name[] = { "fire", "cg", "cg-plastic",
-			"fire-layer", "cg-layer", "fire-adh" };
-		enum rc_method method = m == 0 || m == 3 || m == 5 ?
-		    RC_METHOD_FIRE : RC_METHOD_CG;
+	for (m = 0; m < (int)(sizeof(rows) / sizeof(rows[0])); m++) {
+		const struct bench_row *w = &rows[m];
 		double ar, iters;
 
-		if ((s = solve(g, method, b, 0, m == 2 ? 4 * 0.05 : 0,
-		    m == 3 || m == 4 ? 1.0 / 8 : 0, m == 5, &r, &cpu)) == NULL)
+		if ((b == RC_BOUNDARY_FREE && !w->free_too) ||
+		    (w->plain && (b == RC_BOUNDARY_FREE ||
+		    nn < RC_FFT_BLOCKED_POINTS)))
+			continue;
+		if ((s = solve(g, w->method, b, 0, w->hardness_over_p * 0.05,
+		    w->thickness, w->plain ? SIZE_MAX : RC_FFT_BLOCKED_POINTS,
+		    w->adhesive, &r, &cpu)) == NULL)
 			return -1;
 		ar = contact_fraction(s, nn);
 		iters = (double)(r.iterations ? r.iterations : 1);
 		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.2f\t"
 		    "%.1f\t%.1f\t%.6f\t%.1e\n",
-		    n, rc_boundary_name(b), name[m], r.iterations,
+		    n, rc_boundary_name(b), w->name, r.iterations,
 		    r.fft_pairs, r.fft_pairs / iters, r.seconds, pair,
 		    r.seconds / iters / pair, cpu / iters / pair_cpu,
 		    (double)rc_solver_bytes(s) / (double)nn,
@@ -294,7 +323,8 @@ contention(void)
 				if (pid < 0)
 					return 1;
 				rc_fft_set_threads(j == 0 ? 0 : 1);
-				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0, 0, &r, &cpu);
+				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0,
+				    RC_FFT_BLOCKED_POINTS, 0, &r, &cpu);
 				if (pid > 0)
 					competitor_stop(pid);
 				if (s == NULL)

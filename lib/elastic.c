@@ -333,6 +333,7 @@ rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out)
  * as doubles (a complex-times-real product may be compiled as a full
  * complex one, which the vectoriser leaves alone); the products are the
  * same.  K: k/N is 0 at k = 0 without a branch. */
+#ifdef RC_MPI
 static void
 scale_spec(rc_elastic *e, int inverse)
 {
@@ -358,22 +359,46 @@ scale_spec(rc_elastic *e, int inverse)
 		z[2 * m + 1] *= f;
 	}
 }
+#endif
 
 void
 rc_elastic_force(rc_elastic *e, const double *u, double *out)
 {
+#ifdef RC_MPI
 	rc_elastic_r2c(e, u, e->fft.spec);
 	scale_spec(e, 0);
 	rc_elastic_c2r(e, e->fft.spec, out);
+#else
+	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 0, 0 };
+
+	rc_elastic_convolve(e, u, out, &mu);
+#endif
 }
 
 void
 rc_elastic_displacement(rc_elastic *e, const double *sigma, double *out)
 {
+#ifdef RC_MPI
 	rc_elastic_r2c(e, sigma, e->fft.spec);
 	scale_spec(e, 1);
 	rc_elastic_c2r(e, e->fft.spec, out);
+#else
+	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 1, 0 };
+
+	rc_elastic_convolve(e, sigma, out, &mu);
+#endif
 }
+
+#ifndef RC_MPI
+void
+rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
+    const rc_fft_multiplier *mu)
+{
+	rc_fft_convolve(&e->fft, in, out, mu);
+	e->n_r2c++;
+	e->n_c2r++;
+}
+#endif
 
 double
 rc_elastic_energy_spec(const rc_elastic *e, const fftw_complex *spec)

@@ -111,6 +111,10 @@ void rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out);
 void rc_elastic_force(rc_elastic *e, const double *u, double *out);
 /* out = G sigma (mean zero).  Uses fft.spec; out may be fft.real or sigma. */
 void rc_elastic_displacement(rc_elastic *e, const double *sigma, double *out);
+/* out = IFFT[c_q FFT(in)] with the multiplier mu (fft.h), one transform
+ * pair counted.  Serial build only. */
+void rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
+    const rc_fft_multiplier *mu);
 /* Elastic energy per unit area (1/2) sum_q k_q |u_q|^2 / N^2 of the
  * unnormalised spectrum U = FFT(u) (full-spectrum sum over half storage). */
 double rc_elastic_energy_spec(const rc_elastic *e, const fftw_complex *spec);

@@ -256,6 +256,12 @@ rc_fft_free(rc_fft *f)
 		fftw_destroy_plan(f->forward);
 	if (f->backward)
 		fftw_destroy_plan(f->backward);
+	for (int what = 0; what < 4; what++) {
+		if (f->block[what])
+			fftw_destroy_plan(f->block[what]);
+		if (f->block_tail[what])
+			fftw_destroy_plan(f->block_tail[what]);
+	}
 	fftw_free(f->real);
 	fftw_free(f->spec);
 	memset(f, 0, sizeof(*f));
@@ -271,6 +277,185 @@ void
 rc_fft_backward(rc_fft *f)
 {
 	fftw_execute(f->backward);
+}
+
+/* One-thread plans (the stages run one block per thread): `count` rows
+ * of the real buffer to spec or back, or `count` adjacent columns of
+ * spec in place (stride nxc).  Every block starts at a multiple of
+ * RC_FFT_BLOCK rows or columns, 8 doubles or complex values, so at
+ * FFTW's alignment of the planned base. */
+static fftw_plan
+plan_block(rc_fft *f, int what, int count, unsigned flags)
+{
+	int nx = (int)f->nx, ny = (int)f->ny, nxc = (int)f->nxc;
+	fftw_plan p;
+#ifdef _OPENMP
+	int threads = fftw_planner_nthreads();
+
+	fftw_plan_with_nthreads(1);
+#endif
+	if (what == 0)
+		p = fftw_plan_many_dft_r2c(1, &nx, count, f->real, NULL, 1, nx,
+		    f->spec, NULL, 1, nxc, flags);
+	else if (what == 1)
+		p = fftw_plan_many_dft_c2r(1, &nx, count, f->spec, NULL, 1, nxc,
+		    f->real, NULL, 1, nx, flags);
+	else
+		p = fftw_plan_many_dft(1, &ny, count, f->spec, NULL, nxc, 1,
+		    f->spec, NULL, nxc, 1, what == 2 ? FFTW_FORWARD :
+		    FFTW_BACKWARD, flags);
+#ifdef _OPENMP
+	fftw_plan_with_nthreads(threads);
+#endif
+	return p;
+}
+
+int
+rc_fft_conv_init(rc_fft *f, enum rc_fft_effort effort, size_t min_points,
+    rc_err *err)
+{
+	int row_rest = (int)(f->ny % RC_FFT_BLOCK);
+	int col_rest = (int)(f->nxc % RC_FFT_BLOCK), ok;
+	unsigned flags = effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT ?
+	    effort_flags(effort) : FFTW_ESTIMATE;
+
+	if (f->nx * f->ny < min_points || f->nxc < RC_FFT_BLOCK ||
+	    f->ny < RC_FFT_BLOCK)
+		return 0;
+	for (int what = 0; what < 4; what++) {
+		f->block[what] = plan_block(f, what, RC_FFT_BLOCK, flags);
+		if ((what < 2 ? row_rest : col_rest) > 0)
+			f->block_tail[what] = plan_block(f, what,
+			    what < 2 ? row_rest : col_rest, flags);
+	}
+	/* MEASURE scribbles on the buffers. */
+	memset(f->real, 0, f->nx * f->ny * sizeof(double));
+	ok = 1;
+	for (int what = 0; what < 4; what++)
+		ok = ok && f->block[what] != NULL && ((what < 2 ? row_rest :
+		    col_rest) == 0 || f->block_tail[what] != NULL);
+	if (!ok)
+		return rc_seterr(err, "FFTW could not plan the blocked %zux%zu "
+		    "transforms", f->nx, f->ny);
+	return 0;
+}
+
+int
+rc_fft_conv_blocked(const rc_fft *f)
+{
+	return f->block[0] != NULL;
+}
+
+size_t
+rc_fft_row_blocks(const rc_fft *f)
+{
+	return (f->ny + RC_FFT_BLOCK - 1) / RC_FFT_BLOCK;
+}
+
+void
+rc_fft_block_rows(const rc_fft *f, size_t b, size_t *j0, size_t *j1)
+{
+	*j0 = b * RC_FFT_BLOCK;
+	*j1 = *j0 + RC_FFT_BLOCK < f->ny ? *j0 + RC_FFT_BLOCK : f->ny;
+}
+
+void
+rc_fft_rows_r2c(rc_fft *f, const double *in, size_t b)
+{
+	size_t j0 = b * RC_FFT_BLOCK;
+	fftw_plan p = j0 + RC_FFT_BLOCK <= f->ny ? f->block[0] :
+	    f->block_tail[0];
+
+	fftw_execute_dft_r2c(p, (double *)in + j0 * f->nx,
+	    f->spec + j0 * f->nxc);
+}
+
+void
+rc_fft_rows_c2r(rc_fft *f, double *out, size_t b)
+{
+	size_t j0 = b * RC_FFT_BLOCK;
+	fftw_plan p = j0 + RC_FFT_BLOCK <= f->ny ? f->block[1] :
+	    f->block_tail[1];
+
+	fftw_execute_dft_c2r(p, f->spec + j0 * f->nxc, out + j0 * f->nx);
+}
+
+/* spec[m] *= c_q over `count` columns from i0, every row. */
+static void
+multiply_block(rc_fft *f, const rc_fft_multiplier *mu, size_t i0,
+    size_t count)
+{
+	size_t i, j;
+
+	for (j = 0; j < f->ny; j++) {
+		double *z = (double *)(f->spec + j * f->nxc + i0);
+		const double *k = mu->k + j * f->nxc + i0;
+
+		for (i = 0; i < count; i++) {
+			double c = !mu->inverse ? k[i] * mu->scale :
+			    k[i] > 0 ? mu->scale / k[i] : mu->at_zero;
+
+			z[2 * i] *= c;
+			z[2 * i + 1] *= c;
+		}
+	}
+}
+
+void
+rc_fft_columns(rc_fft *f, const rc_fft_multiplier *mu)
+{
+	size_t nblocks = (f->nxc + RC_FFT_BLOCK - 1) / RC_FFT_BLOCK, b;
+
+#pragma omp parallel for schedule(static)
+	for (b = 0; b < nblocks; b++) {
+		size_t i0 = b * RC_FFT_BLOCK;
+		int full = i0 + RC_FFT_BLOCK <= f->nxc;
+
+		fftw_execute_dft(full ? f->block[2] : f->block_tail[2],
+		    f->spec + i0, f->spec + i0);
+		multiply_block(f, mu, i0, full ? RC_FFT_BLOCK : f->nxc - i0);
+		fftw_execute_dft(full ? f->block[3] : f->block_tail[3],
+		    f->spec + i0, f->spec + i0);
+	}
+}
+
+void
+rc_fft_convolve(rc_fft *f, const double *in, double *out,
+    const rc_fft_multiplier *mu)
+{
+	size_t nm = f->nxc * f->ny, nb = rc_fft_row_blocks(f), m, b;
+	double *z = (double *)f->spec;
+	const double *k = mu->k;
+
+	if (rc_fft_conv_blocked(f)) {
+#pragma omp parallel for schedule(static)
+		for (b = 0; b < nb; b++)
+			rc_fft_rows_r2c(f, in, b);
+		rc_fft_columns(f, mu);
+#pragma omp parallel for schedule(static)
+		for (b = 0; b < nb; b++)
+			rc_fft_rows_c2r(f, out, b);
+		return;
+	}
+	fftw_execute_dft_r2c(f->forward, (double *)in, f->spec);
+	if (!mu->inverse) {
+#pragma omp parallel for schedule(static)
+		for (m = 0; m < nm; m++) {
+			double c = k[m] * mu->scale;
+
+			z[2 * m] *= c;
+			z[2 * m + 1] *= c;
+		}
+	} else {
+#pragma omp parallel for schedule(static)
+		for (m = 0; m < nm; m++) {
+			double c = k[m] > 0 ? mu->scale / k[m] : mu->at_zero;
+
+			z[2 * m] *= c;
+			z[2 * m + 1] *= c;
+		}
+	}
+	fftw_execute_dft_c2r(f->backward, f->spec, out);
 }
 
 double

@@ -44,6 +44,10 @@
 
 #ifdef RC_MPI
 #include "mpi/decomp.h"
+#define BLOCKED_INIT(s, o, err)	0	/* FFTW's MPI transforms only */
+#else
+#define BLOCKED_INIT(s, o, err)	rc_fft_conv_init(&(s)->el.fft, \
+	(o)->fft_effort, (o)->fft_block_points, err)
 #endif
 
 void
@@ -55,6 +59,7 @@ rc_solver_defaults(rc_solver_opts *o)
 	o->tol = 1e-6;
 	o->max_iter = 100000;
 	o->fft_effort = RC_FFT_ESTIMATE;
+	o->fft_block_points = RC_FFT_BLOCKED_POINTS;
 }
 
 const char *
@@ -192,8 +197,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		free(s);
 		return NULL;
 	}
-	if (!s->free_bc && rc_elastic_set_kernel(&s->el, s->lx, s->ly,
-	    o->kernel, err) != 0) {
+	if (!s->free_bc && (rc_elastic_set_kernel(&s->el, s->lx, s->ly,
+	    o->kernel, err) != 0 || BLOCKED_INIT(s, o, err) != 0)) {
 		rc_elastic_free(&s->el);
 		free(s);
 		return NULL;

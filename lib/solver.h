@@ -70,6 +70,12 @@ typedef struct rc_solver_opts {
 	 * solver (lib/mpi/dsolver.h) plans with FFTW_ESTIMATE for
 	 * RC_FFT_ESTIMATE and with FFTW_MEASURE for any other effort. */
 	enum rc_fft_effort fft_effort;
+	/* Periodic grids of at least this many points take the blocked
+	 * transforms (fft.h, rc_fft_convolve), on which FIRE runs its passes
+	 * block by block (solver_fire.c); RC_FFT_BLOCKED_POINTS by default,
+	 * 0 for always, SIZE_MAX for never (the same answers to rounding).
+	 * Serial build. */
+	size_t fft_block_points;
 	/* Called every few iterations if not NULL (progress on a terminal). */
 	void (*progress)(void *ctx, long iter, double residual, double contact_fraction);
 	void *progress_ctx;

@@ -130,6 +130,64 @@ test_inplace(void)
 	}
 }
 
+/* The blocked convolution (rows, then columns in blocks with the
+ * multiplier, then rows) against the plain one (FFTW's 2D pair and a
+ * pass over the spectrum) on sizes with and without a tail block in
+ * either direction, odd nx included: the same values to rounding (a few
+ * ulps of the largest output; 1e-12 leaves a wide margin and would
+ * catch any misplaced block, which errs by O(1)).  In place too. */
+static void
+test_blocked(void)
+{
+	static const size_t sizes[][2] = { { 14, 8 }, { 24, 9 }, { 33, 17 },
+		{ 64, 40 }, { 130, 72 }, { 256, 256 } };
+	rc_err err;
+
+	for (size_t z = 0; z < sizeof(sizes) / sizeof(sizes[0]); z++) {
+		size_t nx = sizes[z][0], ny = sizes[z][1], n = nx * ny, k;
+		rc_fft plain, blocked;
+		double *in, *a, *b, *mult;
+		int inv;
+
+		if (rc_fft_init(&plain, nx, ny, RC_FFT_ESTIMATE, &err) != 0 ||
+		    rc_fft_init(&blocked, nx, ny, RC_FFT_ESTIMATE, &err) != 0 ||
+		    rc_fft_conv_init(&blocked, RC_FFT_ESTIMATE, 0, &err) != 0) {
+			fprintf(stderr, "fft: %s\n", err.msg);
+			exit(1);
+		}
+		test_true(rc_fft_conv_blocked(&blocked) && !rc_fft_conv_blocked(&plain),
+		    "%zux%zu: blocked path planned only where asked", nx, ny);
+		in = fftw_alloc_real(n);
+		a = fftw_alloc_real(n);
+		b = fftw_alloc_real(n);
+		mult = fftw_alloc_real(plain.nxc * ny);
+		for (k = 0; k < n; k++)
+			in[k] = sin(0.37 * (double)k) + cos(0.011 * (double)(k * k % 977));
+		for (k = 0; k < plain.nxc * ny; k++)
+			mult[k] = k % 5 == 0 ? 0 : 1 + (double)(k % 13);
+		for (inv = 0; inv < 2; inv++) {
+			rc_fft_multiplier mu = { mult, 1.0 / (double)n, inv, 0.25 };
+			double maxd = 0, maxv = 0;
+
+			rc_fft_convolve(&plain, in, a, &mu);
+			memcpy(b, in, n * sizeof(double));
+			rc_fft_convolve(&blocked, b, b, &mu);
+			for (k = 0; k < n; k++) {
+				maxd = fmax(maxd, fabs(a[k] - b[k]));
+				maxv = fmax(maxv, fabs(a[k]));
+			}
+			test_abs(maxd / maxv, 0, 1e-12, "%zux%zu %s: blocked (in place) "
+			    "= plain", nx, ny, inv ? "c/k" : "c k");
+		}
+		fftw_free(in);
+		fftw_free(a);
+		fftw_free(b);
+		fftw_free(mult);
+		rc_fft_free(&plain);
+		rc_fft_free(&blocked);
+	}
+}
+
 int
 main(void)
 {
@@ -137,5 +195,6 @@ main(void)
 	test_policy();
 	test_wisdom();
 	test_inplace();
+	test_blocked();
 	return test_summary();
 }
