@@ -167,7 +167,7 @@ int rc_solver_opts_adhesive(const rc_solver_opts *o);
 /* Adhesion (0 without): the mean adhesive pressure p_adh = <sigma_a(g)>
  * over all points (<= 0; contact points count sigma_a(0) = -sigma_max,
  * so p = <wall reaction> + p_adh), and the attractive-area fraction: the
- * points off contact with 0 < g < rho, where the attraction exceeds
+ * points off contact with g < rho, where the attraction exceeds
  * sigma_max / e. */
 double rc_solver_adhesive_pressure(const rc_solver *s);
 double rc_solver_attractive_fraction(const rc_solver *s);
