@@ -172,13 +172,14 @@ shift_to_mean(rc_solver *s, double target)
 		umin = fmin(umin, s->u[k]);
 		umax = fmax(umax, s->u[k]);
 	}
-	/* The mean is non-decreasing in c, at least target at c = target -
-	 * umin and tends to <h> < target as c falls: bracket, bisect. */
 	/* already there (a warm start at the same approach): keep the
 	 * contact points on the wall, which any shift up would lift */
 	if (fabs(shifted_mean(s, 0) - target) <= 1e-14 * (fabs(target) +
 	    umax - umin))
 		return;
+	/* The mean is non-decreasing in c, at least target at c = target -
+	 * umin and tends to <h> < target as c falls: bracket, bisect (about
+	 * 50 O(N) passes, a few iterations' worth, once per solve). */
 	hi = target - umin;
 	lo = target - umax;
 	for (it = 0; it < 200 && shifted_mean(s, lo) > target; it++)
