@@ -20,6 +20,12 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_str(row, "substrate", rc_substrate_name(in->substrate)) ||
 	    rc_row_num(row, "poisson", in->substrate == RC_SUBSTRATE_NONE ? 0 :
 	    in->poisson) ||
+	    rc_row_num(row, "adhesion", in->adhesion) ||
+	    rc_row_num(row, "range", in->range) ||
+	    rc_row_num(row, "p_adh", in->p_adh) ||
+	    rc_row_num(row, "a_attr", in->a_attr) ||
+	    rc_row_num(row, "l_adh_dx", in->l_adh_dx) ||
+	    rc_row_int(row, "separated", in->separated) ||
 	    rc_row_int(row, "n_c", (long long)st->n_c) ||
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||
