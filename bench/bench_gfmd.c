@@ -24,6 +24,11 @@
  * on a bonded elastic layer of thickness L/8, nu = 0.3 (gfmd-solve
  * --thickness; lib/layer.h): the cost of a finite thickness against the
  * half space's rows (a_r error again against the half space).
+ * One more, fire-adh (periodic only), adds the exponential adhesion of
+ * gfmd-solve --adhesion (lib/adhesion.h) with range rho = dx and
+ * sigma_max = dgamma / rho = p (l_adh = 20 dx, resolved): the cost of
+ * adhesion against the fire row (a_r error against the non-adhesive
+ * reference: the effect).
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
  * the blocked transforms (fft.h) and FIRE runs its passes block by block
  * between them (solver_fire.c), fire-plain and cg-plain solve the same
@@ -121,7 +126,7 @@ fft_pair_seconds(size_t n, double *cpu)
 static rc_solver *
 solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
     double tol, double hardness, double thickness, size_t block_points,
-    rc_solve_result *r, double *cpu)
+    int adhesive, rc_solve_result *r, double *cpu)
 {
 	rc_solver_opts o;
 	rc_solver *s;
@@ -137,6 +142,10 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 		o.thickness = thickness;
 		o.substrate = RC_SUBSTRATE_BONDED;
 		o.poisson = 0.3;
+	}
+	if (adhesive) {
+		o.range = g->lx / (double)g->nx;
+		o.adhesion = 0.05 * o.range;
 	}
 	if (tol > 0)
 		o.tol = tol;
@@ -154,7 +163,7 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 	return s;
 }
 
-/* The method rows: the plain solves, plasticity, a layer, and from
+/* The method rows: the plain solves, plasticity, a layer, adhesion, and from
  * RC_FFT_BLOCKED_POINTS on the periodic solves again with FFTW's whole-grid
  * transforms and separate passes (fire-plain, cg-plain) for the gain of
  * the blocked ones. */
@@ -162,15 +171,16 @@ static const struct bench_row {
 	const char *name;
 	enum rc_method method;
 	double hardness_over_p, thickness;
-	int free_too, plain;
+	int free_too, plain, adhesive;
 } rows[] = {
-	{ "fire", RC_METHOD_FIRE, 0, 0, 1, 0 },
-	{ "cg", RC_METHOD_CG, 0, 0, 1, 0 },
-	{ "cg-plastic", RC_METHOD_CG, 4, 0, 1, 0 },
-	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0 },
-	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0 },
-	{ "fire-plain", RC_METHOD_FIRE, 0, 0, 0, 1 },
-	{ "cg-plain", RC_METHOD_CG, 0, 0, 0, 1 },
+	{ "fire", RC_METHOD_FIRE, 0, 0, 1, 0, 0 },
+	{ "cg", RC_METHOD_CG, 0, 0, 1, 0, 0 },
+	{ "cg-plastic", RC_METHOD_CG, 4, 0, 1, 0, 0 },
+	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0, 0 },
+	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0, 0 },
+	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 0, 0, 1 },
+	{ "fire-plain", RC_METHOD_FIRE, 0, 0, 0, 1, 0 },
+	{ "cg-plain", RC_METHOD_CG, 0, 0, 0, 1, 0 },
 };
 
 /* One boundary kind on the map g of n x n points: the reference (FIRE at
@@ -187,7 +197,7 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 
 	pair = fft_pair_seconds(b == RC_BOUNDARY_FREE ? 2 * n : n, &pair_cpu);
 	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, RC_FFT_BLOCKED_POINTS,
-	    &r, &cpu)) == NULL)
+	    0, &r, &cpu)) == NULL)
 		return -1;
 	ref = (double)rc_test_n_contact(s, nn) / (double)nn;
 	rc_solver_free(s);
@@ -201,7 +211,7 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 			continue;
 		if ((s = solve(g, w->method, b, 0, w->hardness_over_p * 0.05,
 		    w->thickness, w->plain ? SIZE_MAX : RC_FFT_BLOCKED_POINTS,
-		    &r, &cpu)) == NULL)
+		    w->adhesive, &r, &cpu)) == NULL)
 			return -1;
 		ar = (double)rc_test_n_contact(s, nn) / (double)nn;
 		iters = (double)(r.iterations ? r.iterations : 1);
@@ -284,7 +294,7 @@ contention(void)
 					return 1;
 				rc_fft_set_threads(j == 0 ? 0 : 1);
 				s = solve(g, RC_METHOD_FIRE, RC_BOUNDARY_PERIODIC, 0, 0, 0,
-				    RC_FFT_BLOCKED_POINTS, &r, &cpu);
+				    RC_FFT_BLOCKED_POINTS, 0, &r, &cpu);
 				if (pid > 0)
 					competitor_stop(pid);
 				if (s == NULL)

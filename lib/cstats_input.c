@@ -21,7 +21,8 @@ static const char *const output_cols[] = {
 	"a_subpixel", "gbar",
 	"gbar_c", "gbar_c_prime", "kappa", "kappa_c", "mean_gap", "approach",
 	"elastic_energy", "n_patches", "patch_size_char", "iterations",
-	"residual", "tol", "seconds", "plan_seconds", "nx", "ny", NULL
+	"residual", "tol", "seconds", "plan_seconds", "nx", "ny",
+	"p_adh", "a_attr", "l_adh_dx", "separated", NULL
 };
 
 /* Metadata derived from the sampled heights, which differ slightly between

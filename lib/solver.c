@@ -123,6 +123,20 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	}
 	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) < 0)
 		return NULL;
+	if (!(o->adhesion >= 0 && isfinite(o->adhesion)) ||
+	    (o->adhesion > 0 && !(o->range > 0 && isfinite(o->range)))) {
+		rc_seterr(err, "adhesion: want a work of adhesion >= 0 and a "
+		    "positive, finite range");
+		return NULL;
+	}
+	if (rc_solver_opts_adhesive(o) && (o->method != RC_METHOD_FIRE ||
+	    o->boundary != RC_BOUNDARY_PERIODIC || rc_solver_opts_plastic(o))) {
+		rc_seterr(err, "adhesion needs the FIRE method (--method fire) on "
+		    "periodic boundaries without a hardness: the CG solves a "
+		    "convex problem and adhesion is not one; free boundaries "
+		    "relax pressures, for which the law has no inverse");
+		return NULL;
+	}
 	if (o->kernel != RC_KERNEL_CONTINUUM && o->kernel != RC_KERNEL_PIXEL) {
 		rc_seterr(err, "unknown elastic kernel %d", (int)o->kernel);
 		return NULL;
@@ -257,9 +271,13 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	int r;
 
 	memset(res, 0, sizeof(*res));
-	if (!(p > 0) || !isfinite(p))
+	if (rc_solver_opts_adhesive(&s->opts)) {
+		if (!isfinite(p))
+			return rc_seterr(err, "pressure must be finite");
+		r = rc__fire_adh_solve(s, 0, &p, 0, res, err);
+	} else if (!(p > 0) || !isfinite(p))
 		return rc_seterr(err, "pressure must be positive and finite");
-	if (s->opts.method == RC_METHOD_FIRE && s->free_bc)
+	else if (s->opts.method == RC_METHOD_FIRE && s->free_bc)
 		r = rc__fire_free_solve(s, p, res, err);
 	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
@@ -375,6 +393,24 @@ rc_solver_approach(const rc_solver *s)
 	rc_elastic_sum(&s->el, &sum, 1);
 	return s->top - sum / rc__points(s) +
 	    (isfinite(s->k_uniform) ? s->last_pressure / s->k_uniform : 0);
+}
+
+int
+rc_solver_opts_adhesive(const rc_solver_opts *o)
+{
+	return o->adhesion > 0;
+}
+
+double
+rc_solver_adhesive_pressure(const rc_solver *s)
+{
+	return rc_solver_opts_adhesive(&s->opts) ? s->p_adh : 0;
+}
+
+double
+rc_solver_attractive_fraction(const rc_solver *s)
+{
+	return rc_solver_opts_adhesive(&s->opts) ? s->a_attr : 0;
 }
 
 int

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver.h - frictionless, non-adhesive contact of a linearly elastic
+/* solver.h - frictionless contact (non-adhesive unless opts.adhesion:
+ * adhesion.h, solver_fire_adh.c) of a linearly elastic
  * half space (above) on a rigid indenter of heights h (below), either
  * periodic (the grid is one cell of an infinite periodic surface) or with
  * free boundaries (the grid is an isolated patch of an infinite half
@@ -56,6 +57,13 @@ typedef struct rc_solver_opts {
 	double thickness;
 	enum rc_substrate substrate;
 	double poisson;
+	/* Adhesion: the exponential law of adhesion.h with work of adhesion
+	 * `adhesion' (pressure times length) and range `range' (length);
+	 * 0: none (the default).  FIRE on periodic boundaries only
+	 * (solver_fire_adh.c, gfmd-solve(1) ADHESION); the pressure may then
+	 * be zero or negative and the approach any finite value. */
+	double adhesion;
+	double range;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
 	/* FFT planning effort (fft.h); RC_FFT_ESTIMATE by default.  The MPI
@@ -82,6 +90,10 @@ typedef struct rc_solve_result {
 	double seconds;		/* wall time of this solve */
 	double fft_pairs;	/* (r2c + c2r transforms) / 2 of this solve */
 	int converged;
+	/* Adhesion under load control: 1 when the solve stopped because the
+	 * body separated (no contact and the applied tension stronger than
+	 * the strongest attraction left: no equilibrium, past pull-off). */
+	int separated;
 } rc_solve_result;
 
 typedef struct rc_solver rc_solver;
@@ -101,7 +113,7 @@ void rc_solver_free(rc_solver *s);
 int rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err);
 
 /* Solve at mean (absolute) pressure p > 0 (free: over the given area, so
- * the load is p lx ly).  Returns 0 if converged, 1 if
+ * the load is p lx ly; with adhesion any finite p: res->separated).  Returns 0 if converged, 1 if
  * it stopped at max_iter or on *stop (the state is still the best reached
  * and the accessors below are valid), -1 on an error. */
 int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
@@ -114,6 +126,8 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * the end.  *pressure gets p; res sums the iterations, transform pairs
  * and time of all trials.  Periodic: delta must be below max h - <h>
  * (full contact).  Returns as rc_solver_solve. */
+/* With adhesion: any finite delta, solved directly by FIRE with the mean
+ * height held (solver_fire_adh.c), which traces unstable branches too. */
 int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err);
 
@@ -148,6 +162,15 @@ double rc_solver_mean_gap(const rc_solver *s);
 double rc_solver_plastic_fraction(const rc_solver *s);
 /* Whether opts.hardness caps the pressure (finite and positive). */
 int rc_solver_opts_plastic(const rc_solver_opts *o);
+/* Whether opts.adhesion switches the adhesive law on (positive). */
+int rc_solver_opts_adhesive(const rc_solver_opts *o);
+/* Adhesion (0 without): the mean adhesive pressure p_adh = <sigma_a(g)>
+ * over all points (<= 0; contact points count sigma_a(0) = -sigma_max,
+ * so p = <wall reaction> + p_adh), and the attractive-area fraction: the
+ * points off contact with g < rho, where the attraction exceeds
+ * sigma_max / e. */
+double rc_solver_adhesive_pressure(const rc_solver *s);
+double rc_solver_attractive_fraction(const rc_solver *s);
 /* Bytes the solver holds (for the memory report). */
 size_t rc_solver_bytes(const rc_solver *s);
 

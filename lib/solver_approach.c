@@ -25,6 +25,8 @@
 #include <math.h>
 #include <string.h>
 
+#include "clock.h"
+
 #define MAX_BRACKET	60
 #define MAX_NARROW	100
 
@@ -54,6 +56,35 @@ eval(struct trial *tr, double x, double *f, rc_err *err)
 	return tr->s->opts.stop && *tr->s->opts.stop ? 1 : 0;
 }
 
+/* Adhesion: FIRE with the mean height held (solver_fire_adh.c); not past
+ * full contact, not with a layer (its approach moves with p / k_0). */
+static int
+adhesive_approach(rc_solver *s, double delta, double *pressure,
+    rc_solve_result *res, rc_err *err)
+{
+	double t0 = rc_clock(), sum = 0, p = s->last_pressure;
+	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
+	int r;
+
+	if (!isfinite(delta))
+		return rc_seterr(err, "approach must be finite");
+	if (isfinite(s->k_uniform))
+		return rc_seterr(err, "adhesion with a layer: load control only "
+		    "(the layer's approach moves with the load)");
+	for (size_t i = 0; i < s->n; i++)
+		sum += s->height[i];
+	if (!(delta < s->top - sum / (double)s->n))
+		return rc_seterr(err, "approach %g reaches full contact "
+		    "(max h - <h> = %g)", delta, s->top - sum / (double)s->n);
+	if ((r = rc__fire_adh_solve(s, 1, &p, delta, res, err)) < 0)
+		return -1;
+	s->last_pressure = *pressure = p;
+	res->seconds = rc_clock() - t0;
+	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
+	res->converged = r == 0;
+	return r;
+}
+
 int
 rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err)
@@ -64,6 +95,8 @@ rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
 
 	memset(res, 0, sizeof(*res));
 	*pressure = NAN;
+	if (rc_solver_opts_adhesive(&s->opts))
+		return adhesive_approach(s, delta, pressure, res, err);
 	if (!(delta > 0) || !isfinite(delta))
 		return rc_seterr(err, "approach must be positive and finite");
 	if (!s->free_bc && !isfinite(s->k_uniform)) {

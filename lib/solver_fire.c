@@ -480,3 +480,9 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	res->residual = residual;
 	return status;
 }
+
+double *
+rc__fire_mass_weighted(rc_solver *s, double mass0)
+{
+	return mass_weighted(s, mass0);
+}

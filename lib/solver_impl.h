@@ -33,6 +33,8 @@ struct rc_solver {
 	double last_pressure;	/* pressure of the last solve (0: none) */
 	double energy;		/* elastic energy per area of the solution */
 	double k_uniform;	/* a layer: k_0 (layer.h); +inf: half space */
+	/* adhesion (solver_fire_adh.c): p_adh and a_attr of the solution */
+	double p_adh, a_attr;
 };
 
 /* The number of points of the whole grid: s->n, or the global count of a
@@ -46,6 +48,14 @@ void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
+/* FIRE's a = M^-1 f_eff, f_eff in s->sigma, m_0 = mass0 (solver_fire.c);
+ * the operator's real buffer, returned. */
+double *rc__fire_mass_weighted(rc_solver *s, double mass0);
+/* FIRE with the adhesive law (solver_fire_adh.c): load control at p
+ * (control 0) or the mean height held at max h - delta (control 1; the
+ * pressure found into *p). */
+int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
+    rc_solve_result *res, rc_err *err);
 /* Free boundaries (solver_cg.c): the rigid level c = <h - G sigma> over
  * {sigma > 0} (returns its size); the convergence measure and the
  * admissible u' from s->u = G sigma (leaves u', the contact set, level

@@ -10,6 +10,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include "adhesion.h"
 #include "atomic.h"
 #include "checkpoint.h"
 #include "clock.h"
@@ -146,6 +147,7 @@ show_progress(void *ctx, long iter, double residual, double contact_fraction)
 	pr->shown = 1;
 }
 
+/* Long: the help text, one printf. */
 static void
 usage(void)
 {
@@ -154,6 +156,7 @@ usage(void)
 "           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--hardness H]\n"
 "           [--kernel continuum|pixel]\n"
 "           [--thickness D --poisson NU [--substrate bonded|slip]]\n"
+"           [--adhesion DGAMMA --range RHO]\n"
 "           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
@@ -183,6 +186,12 @@ usage(void)
 "  --poisson NU         the layer's Poisson ratio, in (-1, 0.5]\n"
 "  --substrate bonded|slip  the layer's interface with the substrate: bonded\n"
 "                       (default) or frictionless\n"
+"  --adhesion DGAMMA    adhesion: work of adhesion DGAMMA (units of E* times\n"
+"                       length) of the exponential law -(DGAMMA/RHO)\n"
+"                       exp(-gap/RHO) (FIRE, periodic; pressures and\n"
+"                       approaches may then be zero or negative; default\n"
+"                       none)\n"
+"  --range RHO          the adhesive law's range (length units)\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
@@ -259,6 +268,7 @@ struct run {
 	rc_fft fft;			/* the analysis plan (spectral gbar_c) */
 	rc_solver *solver;
 	double plan_seconds;
+	double l_adh_dx;		/* adhesion: l_adh / dx; 0: none */
 	size_t npressures;
 	size_t first;			/* the first pressure to solve (resume) */
 	long resumed_iterations;	/* of that pressure, from the checkpoint */
@@ -388,6 +398,28 @@ checkpoint_setup(struct run *r)
 
 /* The boundary kind, the indenter's rms gradient gbar (the unit of p*)
  * and the checks on its scale. */
+/* Adhesion: periodic boundaries only; l_adh / dx, and a warning when the
+ * grid does not resolve the law (adhesion.h). */
+static void
+adhesion_setup(struct run *r, const char *name)
+{
+	const rc_grid *h = r->h;
+	double dx = fmax(h->lx / (double)h->nx, h->ly / (double)h->ny);
+	double l = rc_adhesion_length(r->o.modulus, r->o.so.adhesion,
+	    r->o.so.range);
+
+	if (r->o.so.boundary == RC_BOUNDARY_FREE)
+		tool_fail(&r->t, "--adhesion: %s is solved with free boundaries "
+		    "(not marked periodic), which adhesion does not have; add "
+		    "--boundary periodic", name);
+	r->l_adh_dx = l / dx;
+	if (l < dx)
+		tool_warn(&r->t, "--adhesion: the law is not resolved by the grid: "
+		    "l_adh = E* rho^2 / dgamma = %g < dx = %g (want l_adh >= dx, "
+		    "i.e. --range >= %g); the rows record l_adh_dx = %g",
+		    l, dx, sqrt(r->o.so.adhesion * dx / r->o.modulus), l / dx);
+}
+
 static void
 indenter_setup(struct run *r)
 {
@@ -423,6 +455,8 @@ indenter_setup(struct run *r)
 		hi = fmax(hi, h->z[k]);
 	}
 	gfmd_check_scale(&r->t, r->input, hi - lo, r->gbar);
+	if (rc_solver_opts_adhesive(&o->so))
+		adhesion_setup(r, name);
 	if (o->nreduced && !(r->gbar > 0))
 		tool_fail(&r->t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
@@ -677,6 +711,10 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .a_plastic = rc_solver_plastic_fraction(s),
 		    .thickness = o->so.thickness,
 		    .substrate = o->so.substrate, .poisson = o->so.poisson,
+		    .adhesion = o->so.adhesion, .range = o->so.range,
+		    .p_adh = rc_solver_adhesive_pressure(s),
+		    .a_attr = rc_solver_attractive_fraction(s),
+		    .l_adh_dx = r->l_adh_dx, .separated = res->separated,
 		    .nx = h->nx, .ny = h->ny };
 		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
 		    &r->table, r->out.fp, &r->nunconverged, &err);

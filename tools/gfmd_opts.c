@@ -31,21 +31,28 @@ gfmd_opts_free(struct gfmd_opts *o)
 	o->reduced = o->absolute = o->approach = NULL;
 }
 
-/* A list of pressures (or approaches), each positive. */
+/* A list of pressures (or approaches); their signs are checked with the
+ * other options (adhesion allows any). */
 static void
 pressure_list(struct tool *t, const char *opt, const char *arg, double **v,
     size_t *n)
 {
-	const char *what = strcmp(opt, "--approach") == 0 ? "approach" : "pressure";
-
 	free(*v);
 	*v = NULL;
 	*n = 0;
-	if (tool_double_list(t, opt, arg, v, n) != 0)
-		return;
-	for (size_t i = 0; i < *n; i++)
-		if (!((*v)[i] > 0)) {
-			tool_bad(t, "%s: %s %g must be positive", opt, what, (*v)[i]);
+	tool_double_list(t, opt, arg, v, n);
+}
+
+/* Without adhesion each value of a list must be positive. */
+static void
+positive_list(struct tool *t, const char *opt, const double *v, size_t n)
+{
+	const char *what = strcmp(opt, "--approach") == 0 ? "approach" : "pressure";
+
+	for (size_t i = 0; i < n; i++)
+		if (!(v[i] > 0)) {
+			tool_bad(t, "%s: %s %g must be positive (zero or negative "
+			    "only with --adhesion)", opt, what, v[i]);
 			return;
 		}
 }
@@ -119,6 +126,19 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		o->given_kernel = 1;
 		break;
 	}
+	case OPT_ADHESION:
+		if (tool_double(t, "--adhesion", arg, &o->so.adhesion) == 0 &&
+		    !(o->so.adhesion > 0 && isfinite(o->so.adhesion)))
+			tool_bad(t, "--adhesion %s: want a positive work of "
+			    "adhesion (units of E* times length)", arg);
+		o->given_adhesion = 1;
+		break;
+	case OPT_RANGE:
+		if (tool_double(t, "--range", arg, &o->so.range) == 0 &&
+		    !(o->so.range > 0 && isfinite(o->so.range)))
+			tool_bad(t, "--range %s: want a positive length", arg);
+		o->given_adhesion = 1;
+		break;
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
 			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
@@ -187,6 +207,32 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 	}
 }
 
+/* --adhesion with the options it combines with (gfmd-solve(1),
+ * ADHESION). */
+static void
+adhesion_check(struct tool *t, const struct gfmd_opts *o)
+{
+	if (!(o->so.adhesion > 0) || !(o->so.range > 0))
+		tool_bad(t, "--adhesion, --range: give both, the work of "
+		    "adhesion DGAMMA and the range RHO of its law");
+	if (o->so.method != RC_METHOD_FIRE)
+		tool_bad(t, "--adhesion: solved by --method fire only (adhesion "
+		    "makes the problem non-convex; the CG solves a convex one)");
+	if (o->given_hardness)
+		tool_bad(t, "--adhesion with --hardness: plasticity needs --method "
+		    "cg, adhesion --method fire; not combined");
+	if (o->boundary == RC_BOUNDARY_FREE)
+		tool_bad(t, "--adhesion: periodic boundaries only (free boundaries "
+		    "relax pressures, and the adhesive law has no inverse); drop "
+		    "--boundary free or add --boundary periodic");
+	if (o->given_layer && o->napproach)
+		tool_bad(t, "--adhesion with --thickness: load control (-p, "
+		    "--pressure-abs) only, not --approach");
+	if (o->ck_path != NULL || o->resume_path != NULL)
+		tool_bad(t, "--adhesion: checkpoints do not record the adhesion; "
+		    "run without --checkpoint and --resume");
+}
+
 /* Long: every check between options in one place, so that all problems
  * are reported together. */
 void
@@ -198,6 +244,12 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	    o->resume_path == NULL)
 		tool_bad(t, "no load: give -p P[,P...], --pressure-abs P[,P...] or "
 		    "--approach D[,D...]");
+	if (!o->given_adhesion) {
+		positive_list(t, "-p", o->reduced, o->nreduced);
+		positive_list(t, "--pressure-abs", o->absolute, o->nabsolute);
+		positive_list(t, "--approach", o->approach, o->napproach);
+	} else
+		adhesion_check(t, o);
 	if (o->napproach && (o->ck_path != NULL || o->resume_path != NULL))
 		tool_bad(t, "--approach: --checkpoint and --resume are for load "
 		    "control (-p, --pressure-abs) only");

@@ -31,7 +31,9 @@ enum {
 	OPT_THICKNESS,
 	OPT_SUBSTRATE,
 	OPT_POISSON,
-	OPT_KERNEL
+	OPT_KERNEL,
+	OPT_ADHESION,
+	OPT_RANGE
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -60,6 +62,8 @@ enum {
 	{ "substrate", required_argument, NULL, OPT_SUBSTRATE }, \
 	{ "poisson", required_argument, NULL, OPT_POISSON }, \
 	{ "kernel", required_argument, NULL, OPT_KERNEL }, \
+	{ "adhesion", required_argument, NULL, OPT_ADHESION }, \
+	{ "range", required_argument, NULL, OPT_RANGE }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -89,6 +93,7 @@ struct gfmd_opts {
 	int poisson_given;
 	int given_max_iter;
 	int given_kernel;
+	int given_adhesion;		/* --adhesion or --range */
 };
 
 void gfmd_opts_init(struct gfmd_opts *o);

@@ -22,6 +22,12 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    rc_row_str(row, "substrate", rc_substrate_name(in->substrate)) ||
 	    rc_row_num(row, "poisson", in->substrate == RC_SUBSTRATE_NONE ? 0 :
 	    in->poisson) ||
+	    rc_row_num(row, "adhesion", in->adhesion) ||
+	    rc_row_num(row, "range", in->range) ||
+	    rc_row_num(row, "p_adh", in->p_adh) ||
+	    rc_row_num(row, "a_attr", in->a_attr) ||
+	    rc_row_num(row, "l_adh_dx", in->l_adh_dx) ||
+	    rc_row_int(row, "separated", in->separated) ||
 	    rc_row_int(row, "n_c", (long long)st->n_c) ||
 	    rc_row_int(row, "n_cl", (long long)st->n_cl) ||
 	    rc_row_int(row, "n_tot", (long long)st->n_tot) ||
@@ -96,7 +102,12 @@ gfmd_emit_row(const struct tool *t, const struct gfmd_row *in,
 		rc_seterr(err, "%s", strerror(errno));
 		return GFMD_ROW_WRITE;
 	}
-	if (!converged) {
+	if (in->separated)
+		tool_warn(t, "p = %g: no equilibrium: the body separated (no "
+		    "contact, and the tension exceeds the strongest attraction "
+		    "left: past pull-off); row written with separated 1, going "
+		    "on", in->p);
+	else if (!converged) {
 		(*nunconverged)++;
 		tool_warn(t, "p = %g: not converged after %ld iterations "
 		    "(residual %.3g, tolerance %.3g); row written, going on",

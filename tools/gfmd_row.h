@@ -31,6 +31,10 @@ struct gfmd_row {
 	double thickness;		/* the layer's; 0: a half space */
 	enum rc_substrate substrate;	/* RC_SUBSTRATE_NONE: a half space */
 	double poisson;			/* the layer's; 0 for a half space */
+	double adhesion, range;		/* the adhesive law's; 0: none */
+	double p_adh, a_attr;		/* rc_solver_adhesive_pressure, ..._fraction */
+	double l_adh_dx;		/* l_adh / dx (adhesion.h); 0: none */
+	int separated;			/* rc_solve_result.separated */
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */
 };
@@ -48,8 +52,9 @@ void gfmd_pressure(const struct gfmd_opts *o, size_t k, double gbar,
     double *p, double *p_star);
 /* A pressure done: the row of in into row, written to table and flushed
  * when fp is not NULL (the process that writes the table), with the
- * warnings on a nan kappa_c and on a solve that did not converge
- * (converged 0; counted in *nunconverged).  0; -1: out of memory; -2: the
+ * warnings on a nan kappa_c, on a body that separated (in->separated)
+ * and else on a solve that did not converge (converged 0; counted in
+ * *nunconverged).  0; -1: out of memory; -2: the
  * table could not be written (err: why). */
 #define GFMD_ROW_NOMEM	(-1)
 #define GFMD_ROW_WRITE	(-2)

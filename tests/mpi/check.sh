@@ -178,6 +178,8 @@ for bad in "--method cg" "--fd" "--png x.png" "--checkpoint c.surf" "--gap g.npy
 	check_status "gfmd-solve MPI refuses $bad" 2 $MPIRUN -np 2 \
 	    "$MPI_BIN/gfmd-solve" -p 0.1 $bad t.surf
 done
+check_status "gfmd-solve MPI refuses --adhesion" 2 $MPIRUN -np 2 \
+    "$MPI_BIN/gfmd-solve" -p 0.1 --adhesion 0.01 --range 0.1 t.surf
 $MPIRUN -np 2 "$MPI_BIN/gfmd-solve" -p 0.1 --method cg t.surf 2>err.txt
 check "gfmd-solve MPI --method cg message" grep -q "FIRE only" err.txt
 check_status "gfmd-solve MPI refuses --approach" 2 $MPIRUN -np 2 \

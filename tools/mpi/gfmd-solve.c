@@ -136,6 +136,9 @@ parse_options(struct run *r, int argc, char **argv)
 	if (o->given_hardness)
 		tool_bad(t, "--hardness: not in the MPI build (perfect "
 		    "plasticity needs the serial gfmd-solve with --method cg)");
+	if (o->given_adhesion)
+		tool_bad(t, "--adhesion: not in the MPI build (adhesion is "
+		    "solved by the serial gfmd-solve)");
 	if (o->boundary == RC_BOUNDARY_FREE || o->napproach)
 		tool_bad(t, "--boundary free, --approach: not in the MPI build "
 		    "(periodic boundaries under load control only; use the serial "

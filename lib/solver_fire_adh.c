@@ -1,0 +1,338 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* solver_fire_adh.c - FIRE-GFMD with the adhesive law of adhesion.h on
+ * periodic boundaries (a half space or a layer): the loop of
+ * solver_fire.c with the adhesive traction in the wall pass, kept apart so
+ * that the plain loop pays nothing for it (solver.c dispatches here only
+ * when opts.adhesion > 0).
+ *
+ * Total energy per area E(u) = (1/2) <u K u> + <phi(u - h)> + p <u>,
+ * u >= h: non-convex (phi is concave), so it has stable and unstable
+ * equilibria and, under load control past pull-off, none.  FIRE only
+ * descends E, so it finds a stable equilibrium (a local minimum) near the
+ * warm start: a list of loads or approaches traces a branch, and one
+ * that goes up and down shows the hysteresis.
+ *
+ * The wall pass, per point, with implied = p + (K u)(r) (the pressure the
+ * elastic body needs there) and sigma_a = sigma_a(u - h):
+ *   on the wall (u = h) and implied > sigma_a(0) = -sigma_max: contact,
+ *     the wall takes implied - sigma_a(0) >= 0, f_eff = 0;
+ *   elsewhere f_eff = sigma_a - implied (d = -f_eff, the equilibrium
+ *     error).
+ * Convergence: rms(d) / P <= tol, P = max(|p|, sigma_max) (the pressure
+ * scale: the load, or the adhesive stress when the load is small or
+ * zero).  The load balance error is the mean of d over the points off
+ * contact (<K u> = 0), so the rms bounds it.
+ *
+ * Load control (control 0): the mean mode has the mass of solver_fire.c
+ * (from the contact count).  The body separates when no point is in
+ * contact and the tension -p exceeds the strongest attraction left,
+ * sigma_max exp(-min g / rho): then every point pulls less than the load
+ * and the mean accelerates away; the solve stops there with
+ * res->separated = 1 (returns 1).
+ *
+ * Displacement control (control 1): <u> = max h - delta is held (the
+ * approach of solver.h).  The mean of p + K u - sigma is then the unknown
+ * p: p = (sum_C (K u) + sum_F sigma_a) / n_F (C the contact points, F the
+ * rest, n_F their count), updated every pass; the mean mode of the step
+ * is removed (infinite m_0) and the step's mean over F subtracted, which
+ * keeps f_eff . a > 0 (sum_F f_eff = 0 by the choice of p); the drift the
+ * wall's clamp adds is put back by a shift of the points off the wall
+ * after each step.  No equilibrium is skipped: the unstable branch of a
+ * load-controlled curve is stable at fixed approach.  The start shifts the
+ * warm state to the new mean (bisection on the shift with the clamp).
+ *
+ * Cost per iteration: that of solver_fire.c plus one exp per point within
+ * RC_ADH_CUTOFF ranges of the wall (displacement control: one more O(N)
+ * pass for the mean).  Memory: none beyond FIRE's.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "adhesion.h"
+
+/* FIRE's parameters: the values of solver_fire.c (measured there). */
+static const struct {
+	double dt_start, dt_max, f_inc, f_dec, alpha_start, f_alpha, m0_scale;
+	long n_min, progress_every;
+} FP = { 1.0, 2.0, 1.1, 0.85, 0.5, 0.99, 2.0, 1, 50 };
+
+/* FIRE's step size and mixing (the rules of solver_fire.c). */
+struct fire {
+	double dt, alpha;
+	long npos;
+};
+
+/* After a step of power pw: 1 on a restart (pw <= 0). */
+static int
+fire_adapt(struct fire *fs, double pw)
+{
+	if (!(pw > 0)) {
+		fs->npos = 0;
+		fs->dt *= FP.f_dec;
+		fs->alpha = FP.alpha_start;
+		return 1;
+	}
+	if (++fs->npos > FP.n_min) {
+		fs->dt = fmin(fs->dt * FP.f_inc, FP.dt_max);
+		fs->alpha *= FP.f_alpha;
+	}
+	return 0;
+}
+
+/* FIRE 2.0's mixing v' = mv (v + dt a) + ma a, |v'| from the sums. */
+static void
+fire_weights(const struct fire *fs, double aa, double av, double vv,
+    double *mv, double *ma)
+{
+	*mv = 1;
+	*ma = 0;
+	if (aa > 0) {
+		*mv = 1 - fs->alpha;
+		*ma = fs->alpha * sqrt((vv + 2 * fs->dt * av +
+		    fs->dt * fs->dt * aa) / aa);
+	}
+}
+
+struct adh_pass {
+	size_t on;		/* contact points */
+	double sum_d2;		/* sum of d^2 off contact */
+	double sum_ku_c;	/* sum of K u over contact points */
+	double sum_sa_f;	/* sum of sigma_a off contact */
+	double power;		/* f_eff . v */
+	double gmin;		/* smallest gap off contact */
+};
+
+/* The wall pass with adhesion: f_eff into s->sigma, the contact set. */
+static void
+adh_wall_force(rc_solver *s, const rc_adhesion *law, double p,
+    struct adh_pass *o)
+{
+	size_t k, n = s->n, on = 0;
+	double sum_d2 = 0, sum_kc = 0, sum_sa = 0, pw = 0, gmin = HUGE_VAL;
+	const double *u = s->u, *h = s->height, *v = s->fire_vel;
+	double *f = s->sigma, sa0 = -law->smax;
+	unsigned char *contact = s->contact;
+
+	rc_elastic_force(&s->el, u, f);
+#pragma omp parallel for reduction(+:sum_d2, sum_kc, sum_sa, on, pw) \
+    reduction(min:gmin) schedule(static)
+	for (k = 0; k < n; k++) {
+		double implied = p + f[k], g = u[k] - h[k];
+
+		if (g <= 0 && implied > sa0) {
+			contact[k] = 1;
+			sum_kc += f[k];
+			on++;
+			f[k] = 0;
+		} else {
+			double sa = rc_adhesion_traction(law, g), d = implied - sa;
+
+			contact[k] = 0;
+			f[k] = -d;
+			sum_d2 += d * d;
+			sum_sa += sa;
+			if (g < gmin)
+				gmin = g;
+		}
+		pw += f[k] * v[k];
+	}
+	o->on = on;
+	o->sum_d2 = sum_d2;
+	o->sum_ku_c = sum_kc;
+	o->sum_sa_f = sum_sa;
+	o->power = pw;
+	o->gmin = gmin;
+}
+
+/* Mean of max(u + c, h). */
+static double
+shifted_mean(const rc_solver *s, double c)
+{
+	size_t k;
+	double sum = 0;
+
+#pragma omp parallel for reduction(+:sum) schedule(static)
+	for (k = 0; k < s->n; k++)
+		sum += fmax(s->u[k] + c, s->height[k]);
+	return sum / (double)s->n;
+}
+
+/* Shift u by the c (bisection) that makes <max(u + c, h)> = target, then
+ * clamp; target above <h>. */
+static void
+shift_to_mean(rc_solver *s, double target)
+{
+	size_t k;
+	double lo, hi, umin = HUGE_VAL, umax = -HUGE_VAL;
+	int it;
+
+	for (k = 0; k < s->n; k++) {
+		umin = fmin(umin, s->u[k]);
+		umax = fmax(umax, s->u[k]);
+	}
+	/* already there (a warm start at the same approach): keep the
+	 * contact points on the wall, which any shift up would lift */
+	if (fabs(shifted_mean(s, 0) - target) <= 1e-14 * (fabs(target) +
+	    umax - umin))
+		return;
+	/* The mean is non-decreasing in c, at least target at c = target -
+	 * umin and tends to <h> < target as c falls: bracket, bisect (about
+	 * 50 O(N) passes, a few iterations' worth, once per solve). */
+	hi = target - umin;
+	lo = target - umax;
+	for (it = 0; it < 200 && shifted_mean(s, lo) > target; it++)
+		lo -= (hi - lo) + 1;
+	for (it = 0; it < 200 && hi - lo > 1e-15 * (fabs(hi) +
+	    fabs(lo)); it++) {
+		double mid = 0.5 * (lo + hi);
+
+		if (shifted_mean(s, mid) > target)
+			hi = mid;
+		else
+			lo = mid;
+	}
+	for (k = 0; k < s->n; k++)
+		s->u[k] = fmax(s->u[k] + hi, s->height[k]);
+}
+
+/* The state's pressures (total traction: p + K u on contact, sigma_a
+ * elsewhere), p_adh, a_attr and the elastic energy. */
+static void
+adh_finish(rc_solver *s, const rc_adhesion *law, double p)
+{
+	size_t k, n = s->n, attr = 0;
+	double sum = 0, sum_a = 0, *sig = s->sigma;
+
+	rc_elastic_force(&s->el, s->u, sig);
+#pragma omp parallel for reduction(+:sum, sum_a, attr) schedule(static)
+	for (k = 0; k < n; k++) {
+		double g = s->u[k] - s->height[k], sa = rc_adhesion_traction(law, g);
+
+		sum += s->u[k] * sig[k];
+		sum_a += sa;
+		if (!s->contact[k] && g < law->range)
+			attr++;
+		sig[k] = s->contact[k] ? p + sig[k] : sa;
+	}
+	s->energy = 0.5 * sum / (double)n;
+	s->p_adh = sum_a / (double)n;
+	s->a_attr = (double)attr / (double)n;
+}
+
+int
+rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
+    rc_solve_result *res, rc_err *err)
+{
+	size_t n = s->n, k;
+	struct fire fs = { FP.dt_start, FP.alpha_start, 0 };
+	double residual = HUGE_VAL, *u = s->u, *v = s->fire_vel, p = *pp;
+	double target = 0;
+	const double *h = s->height;
+	const unsigned char *contact = s->contact;
+	rc_adhesion law;
+	struct adh_pass ps;
+	long it;
+	int status = 1;
+
+	if (rc_adhesion_init(&law, s->opts.adhesion, s->opts.range) != 0)
+		return rc_seterr(err, "adhesion %g, range %g: want both positive "
+		    "and finite", s->opts.adhesion, s->opts.range);
+	if (!s->have_u) {
+		for (k = 0; k < n; k++)
+			u[k] = s->top;
+		s->have_u = 1;
+	}
+	for (k = 0; k < n; k++)
+		if (u[k] < h[k])
+			u[k] = h[k];
+	if (control) {
+		target = s->top - delta;
+		shift_to_mean(s, target);
+		if (!isfinite(p))
+			p = 0;
+	}
+	memset(v, 0, n * sizeof(double));
+	res->separated = 0;
+	for (it = 0; ; it++) {
+		double mass0, aa = 0, av = 0, vv = 0, sa_f = 0, sv = 0, shift = 0;
+		double mix_v, mix_a, *a, scale;
+		size_t nf;
+		int restart;
+
+		adh_wall_force(s, &law, p, &ps);
+		nf = n - ps.on;
+		scale = fmax(fabs(p), law.smax);
+		residual = sqrt(ps.sum_d2 / (double)n) / scale;
+		if (control && nf > 0)
+			p = (ps.sum_ku_c + ps.sum_sa_f) / (double)nf;
+		if (residual <= s->opts.tol) {
+			status = 0;
+			break;
+		}
+		if (!control && ps.on == 0 && p < 0 &&
+		    law.smax * exp(-ps.gmin / law.range) < -p) {
+			res->separated = 1;
+			break;
+		}
+		if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop))
+			break;
+		if (s->opts.progress && it % FP.progress_every == 0)
+			s->opts.progress(s->opts.progress_ctx, it, residual,
+			    (double)ps.on / (double)n);
+		mass0 = control ? HUGE_VAL : FP.m0_scale * s->el.k_min *
+		    sqrt((double)(ps.on > 0 ? ps.on : 1) / (double)n);
+		a = rc__fire_mass_weighted(s, mass0);
+		restart = fire_adapt(&fs, ps.power);
+		/* Displacement control: the step's mean over F removed
+		 * first (a = 0 on C, v = 0 on a restart). */
+#pragma omp parallel for reduction(+:aa, av, vv, sa_f, sv) schedule(static)
+		for (k = 0; k < n; k++) {
+			double ak = contact[k] ? 0 : a[k], vk = restart ? 0 : v[k];
+
+			aa += ak * ak;
+			av += ak * vk;
+			vv += vk * vk;
+			sa_f += ak;
+			sv += vk;
+		}
+		if (control && nf > 0) {
+			shift = sa_f / (double)nf;
+			aa -= (double)nf * shift * shift;
+			av -= shift * sv;
+		}
+		fire_weights(&fs, aa, av, vv, &mix_v, &mix_a);
+#pragma omp parallel for schedule(static)
+		for (k = 0; k < n; k++) {
+			double ak = contact[k] ? 0 : a[k] - shift;
+			double vk = mix_v * ((restart ? 0 : v[k]) + fs.dt * ak) +
+			    mix_a * ak;
+
+			u[k] = fmax(u[k] + fs.dt * vk, h[k]);
+			v[k] = u[k] > h[k] ? vk : 0;
+		}
+		if (control) {
+			/* the clamp's drift of the mean, put back off the wall */
+			double sum = 0, c;
+			size_t nfree = 0;
+
+#pragma omp parallel for reduction(+:sum, nfree) schedule(static)
+			for (k = 0; k < n; k++) {
+				sum += u[k];
+				nfree += u[k] > h[k];
+			}
+			c = nfree > 0 ? (target * (double)n - sum) / (double)nfree : 0;
+			if (c != 0)
+#pragma omp parallel for schedule(static)
+				for (k = 0; k < n; k++)
+					if (u[k] > h[k])
+						u[k] = fmax(u[k] + c, h[k]);
+		}
+	}
+	adh_finish(s, &law, p);
+	*pp = p;
+	res->iterations = it;
+	res->residual = residual;
+	return status;
+}

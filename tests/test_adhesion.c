@@ -1,0 +1,496 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_adhesion.c - the exponential adhesive law of adhesion.h in FIRE
+ * (solver_fire_adh.c) on periodic boundaries, against closed forms:
+ *  - the law: its traction integrates to -dgamma, is -dphi/dg;
+ *  - a sphere (paraboloid, E* = 1, dx = 1) traced under displacement
+ *    control: pull-off -2 pi dgamma R in the DMT limit (Tabor mu << 1),
+ *    -1.5 pi dgamma R in the JKR limit (mu >> 1), and the JKR contact
+ *    radius at zero load, a0^3 = 9 pi dgamma R^2 / (2 E*);
+ *  - Johnson (1995): a 1-D sine h = A cos(2 pi x / L) under displacement
+ *    control: the mean pressure p at contact half-width a against
+ *      p(a) = p* sin^2(pi a / L) - sqrt(2 E* dgamma tan(pi a / L) / L),
+ *    p* = pi E* A / L (Westergaard's full-contact pressure; the second
+ *    term the tension of a periodic flat punch whose edge stress
+ *    intensity K meets Griffith's K^2 / (2 E*) = dgamma; gfmd-solve(1),
+ *    ADHESION), and its pull-off, the minimum of p(a);
+ *  - dgamma -> 0: the non-adhesive contact;
+ *  - hysteresis: loading and unloading branches, the pull-off on the
+ *    unloading one; separation past pull-off under load control;
+ *  - warm starts; refusals.
+ * Measured errors, and the tolerances from them, at each check. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "adhesion.h"
+#include "solver.h"
+#include "synth.h"
+#include "testlib.h"
+
+static rc_grid *
+sphere(size_t n, double R)
+{
+	rc_grid *g = rc_grid_new(n, n, (double)n, (double)n, NULL);
+
+	for (size_t j = 0; j < n; j++)
+		for (size_t i = 0; i < n; i++) {
+			double x = (double)i - 0.5 * (double)n;
+			double y = (double)j - 0.5 * (double)n;
+
+			g->z[j * n + i] = -(x * x + y * y) / (2 * R);
+		}
+	g->periodic = 1;
+	return g;
+}
+
+static rc_grid *
+sine(size_t nx, size_t ny, double A)
+{
+	rc_grid *g = rc_grid_new(nx, ny, (double)nx, (double)ny, NULL);
+
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < nx; i++)
+			g->z[j * nx + i] = A * cos(2 * M_PI * (double)i / (double)nx);
+	g->periodic = 1;
+	return g;
+}
+
+static rc_solver *
+adhesive(const rc_grid *g, double dgamma, double range, double tol)
+{
+	rc_solver_opts o;
+	rc_err err;
+	rc_solver *s;
+
+	rc_solver_defaults(&o);
+	o.adhesion = dgamma;
+	o.range = range;
+	o.tol = tol;
+	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
+		fprintf(stderr, "rc_solver_new: %s\n", err.msg);
+		exit(1);
+	}
+	return s;
+}
+
+static size_t
+n_contact(const rc_solver *s, size_t n)
+{
+	const unsigned char *c = rc_solver_contact(s);
+	size_t on = 0;
+
+	for (size_t k = 0; k < n; k++)
+		on += c[k];
+	return on;
+}
+
+/* The mean pressure at approach delta (displacement control). */
+static double
+at_approach(rc_solver *s, double delta, int *status, long *iterations)
+{
+	rc_solve_result res;
+	rc_err err;
+	double p;
+	int st = rc_solver_solve_approach(s, delta, &p, &res, &err);
+
+	if (st < 0) {
+		fprintf(stderr, "approach %g: %s\n", delta, err.msg);
+		exit(1);
+	}
+	if (status && st != 0)
+		*status = st;
+	if (iterations)
+		*iterations = res.iterations;
+	return p;
+}
+
+struct sweep {
+	double fmin;		/* least force (p n^2) */
+	double a0;		/* contact radius where the force crosses 0 */
+	int status;		/* worst solve status */
+	double d_out;		/* the last approach in contact */
+	double d_at, f_at;	/* the force at approach d_at */
+	size_t n_at;		/* and the contact points there */
+};
+
+/* A sphere unloaded from approach d0 in steps of -step until it has come
+ * off the indenter for 4 steps: the least force and the zero-load
+ * contact radius (linear interpolation of sqrt(n_c / pi)). */
+static struct sweep
+unload(rc_solver *s, size_t n, double d0, double step)
+{
+	struct sweep w = { HUGE_VAL, NAN, 0, NAN, -2, NAN, 0 };
+	double f_prev = NAN, a_prev = NAN;
+	int off = 0;
+
+	for (double d = d0; off < 4; d -= step) {
+		double f = at_approach(s, d, &w.status, NULL) * (double)(n * n);
+		double a = sqrt((double)n_contact(s, n * n) / M_PI);
+
+		if (f < w.fmin)
+			w.fmin = f;
+		if (f_prev > 0 && f <= 0)
+			w.a0 = a_prev + (a - a_prev) * f_prev / (f_prev - f);
+		if (a > 0)
+			w.d_out = d;
+		if (d == w.d_at) {
+			w.f_at = f;
+			w.n_at = n_contact(s, n * n);
+		}
+		f_prev = f;
+		a_prev = a;
+		off = a == 0 ? off + 1 : 0;
+		if (d < -50)
+			break;
+	}
+	return w;
+}
+
+static void
+test_law(void)
+{
+	rc_adhesion a;
+	double sum = 0, h = 1e-3;
+
+	test_int(rc_adhesion_init(&a, 0.3, 0.2), 0, "law: init");
+	test_int(rc_adhesion_init(&a, 0, 0.2), -1, "law: dgamma 0 refused");
+	rc_adhesion_init(&a, 0.3, 0.2);
+	/* midpoint rule to 40 ranges: error (h^2/24) |sigma''| ~ 1e-6 */
+	for (double g = 0.5 * h; g < 8; g += h)
+		sum += rc_adhesion_traction(&a, g) * h;
+	test_rel(sum, -0.3, 1e-5, "law: int_0^inf sigma_a dg = -dgamma");
+	test_rel(rc_adhesion_traction(&a, 0.1),
+	    -(rc_adhesion_energy(&a, 0.1 + 1e-6) - rc_adhesion_energy(&a,
+	    0.1 - 1e-6)) / 2e-6, 1e-8, "law: sigma_a = -dphi/dg");
+	test_rel(rc_adhesion_length(2, 0.3, 0.2), 2 * 0.04 / 0.3, 1e-15,
+	    "law: l_adh = E* rho^2 / dgamma");
+	test_rel(rc_adhesion_tabor(128, 1, 0.25, 0.5), 4, 1e-14,
+	    "law: Tabor mu of R 128, dgamma 0.25, rho 0.5");
+}
+
+/* DMT: R = 50, rho = 2 (l_adh = 400 and 1600 dx); measured
+ * -1.969 pi dgamma R at mu = 0.085 and -1.986 at mu = 0.034 (the elastic
+ * flattening lowers the rigid sphere's 2 by O(mu)); tolerance 2.5% and
+ * 1.0%, and the error must fall with mu. */
+static void
+test_dmt(void)
+{
+	rc_grid *g = sphere(128, 50);
+	double err[2], dg[2] = { 0.01, 0.0025 }, tol[2] = { 0.025, 0.010 };
+
+	for (int i = 0; i < 2; i++) {
+		rc_solver *s = adhesive(g, dg[i], 2, 1e-8);
+		struct sweep w = unload(s, 128, 0.3, 0.01);
+		double f = w.fmin / (M_PI * dg[i] * 50);
+
+		test_int(w.status, 0, "DMT mu %.3f: every solve converges",
+		    rc_adhesion_tabor(50, 1, dg[i], 2));
+		test_range(f, -2, -2 * (1 - tol[i]), "DMT mu %.3f: pull-off "
+		    "F / (pi dgamma R) (-2 in the limit)",
+		    rc_adhesion_tabor(50, 1, dg[i], 2));
+		err[i] = f + 2;
+		rc_solver_free(s);
+	}
+	test_true(err[1] < err[0], "DMT: the error falls with mu (%.4f at mu "
+	    "0.085, %.4f at 0.034)", err[0], err[1]);
+	rc_grid_free(g);
+}
+
+/* JKR: dgamma 0.25, rho 0.5 (l_adh = dx), 256^2.  Measured: pull-off
+ * -1.5453 pi dgamma R at mu = 4 (R = 128), -1.5634 at mu = 3 (R = 54):
+ * the finite mu, falling towards -1.5.  Tolerance 4.5% at mu 4 (3.0%
+ * measured), and the error must fall from mu 3 to 4.  a0 at mu 4:
+ * measured 0.9% below (9 pi dgamma R^2 / 2)^(1/3) = 38.7 dx; tolerance 4%
+ * (one pixel of radius is 2.6%).
+ * Hysteresis at mu 4: loaded from approach -3 up to 5 before the
+ * unloading: the loading branch jumps into contact at -1.75, the
+ * unloading one out at -2.75 (measured); at -2 the loading branch is off
+ * the indenter (force -0.05 pi dgamma R, the attraction alone), the
+ * unloading one in contact (-1.39); the least force, the pull-off, lies
+ * on the unloading branch.  Load control past it (-1.6 pi dgamma R)
+ * separates, before max_iter (measured 106 iterations); at -1.4 it
+ * holds. */
+static void
+test_jkr(void)
+{
+	double R[2] = { 54, 128 }, err[2], pc = M_PI * 0.25 * 128;
+	rc_solve_result res;
+	rc_err e;
+	rc_grid *g;
+
+	for (int i = 0; i < 2; i++) {
+		rc_solver *s;
+		struct sweep w;
+		double f, a0 = cbrt(9 * M_PI * 0.25 * R[i] * R[i] / 2);
+		double fmin_load = HUGE_VAL, f_load = NAN, d_in = NAN;
+		size_t n_load = 0;
+		int st;
+
+		g = sphere(256, R[i]);
+		s = adhesive(g, 0.25, 0.5, 1e-6);
+		for (double d = -3; i == 1 && d <= 5; d += 0.25) {
+			double fl = at_approach(s, d, &st, NULL) * 256 * 256;
+			size_t nc = n_contact(s, 256 * 256);
+
+			if (nc == 0)
+				fmin_load = fmin(fmin_load, fl);
+			else if (isnan(d_in))
+				d_in = d;
+			if (d == -2) {
+				n_load = nc;
+				f_load = fl;
+			}
+		}
+		w = unload(s, 256, i == 0 ? 3 : 5, 0.25);
+		f = w.fmin / (M_PI * 0.25 * R[i]);
+		test_int(w.status, 0, "JKR R %g: every solve converges", R[i]);
+		err[i] = f + 1.5;
+		if (i == 0) {
+			rc_solver_free(s);
+			rc_grid_free(g);
+			continue;
+		}
+		test_rel(f, -1.5, 0.045, "JKR mu 4: pull-off F / (pi dgamma R)");
+		test_rel(w.a0, a0, 0.04, "JKR mu 4: contact radius at zero load");
+		test_true(w.d_out < d_in, "hysteresis sphere: contact from "
+		    "approach %g loading, down to %g unloading", d_in, w.d_out);
+		test_true(n_load == 0 && w.n_at > 0, "hysteresis sphere: at "
+		    "approach -2 loading n_c %zu, unloading n_c %zu", n_load,
+		    w.n_at);
+		test_true(w.f_at < -1 * pc && f_load > -0.1 * pc, "hysteresis "
+		    "sphere: at approach -2 the force unloading %.3f, loading "
+		    "%.3f pi dgamma R", w.f_at / pc, f_load / pc);
+		test_true(w.fmin < 10 * fmin_load, "hysteresis sphere: the "
+		    "pull-off %.4f (unloading) far beyond the least force off "
+		    "contact on loading, %.4f pi dgamma R", w.fmin / pc,
+		    fmin_load / pc);
+		at_approach(s, 3, NULL, NULL);
+		pc /= 256.0 * 256.0;
+		st = rc_solver_solve(s, -1.4 * pc, &res, &e);
+		test_true(st == 0 && !res.separated && n_contact(s, 256 * 256) > 0,
+		    "load control at -1.4 pi dgamma R: in contact, converged");
+		st = rc_solver_solve(s, -1.6 * pc, &res, &e);
+		test_true(st == 1 && res.separated, "load control at -1.6 pi "
+		    "dgamma R: separated (status %d, separated %d)", st,
+		    res.separated);
+		test_true(res.iterations < 100000, "separation found before "
+		    "max_iter (%ld iterations)", res.iterations);
+		rc_solver_free(s);
+		rc_grid_free(g);
+	}
+	test_true(fabs(err[1]) < fabs(err[0]), "JKR: the error falls with mu "
+	    "(%.4f at mu 3, %.4f at mu 4)", err[0], err[1]);
+}
+
+/* Johnson's p(a) of a sine, alpha = sqrt(2 dgamma L / (pi^2 E* A^2)). */
+static double
+johnson(double a, double L, double A, double dgamma)
+{
+	double psi = M_PI * a / L, s = sin(psi);
+
+	return M_PI * A / L * s * s - sqrt(2 * dgamma * tan(psi) / L);
+}
+
+/* Johnson (1995): L = 256, A = 2, alpha = 0.3 (dgamma = 0.00694),
+ * 256 x 4 points, dx = 1; the contact half-width a = n_c / (2 ny).
+ * Measured max |p - p(a)| over approaches 1.9 ... 0:
+ * 0.0095 p* at rho = 0.1 (l_adh = 1.44 dx = 0.0056 L), 0.027 p* at rho =
+ * 0.2 (l_adh 4x): the finite range, shrinking with l_adh / L (a grid
+ * twice as fine at the same l_adh / L, 512 x 4 with A = 4: 0.0098 p*, so
+ * not the grid).  Tolerance 0.02 p*.  Pull-off: min over a of p(a) =
+ * -0.0959 p*; measured -0.0993 p* (0.0033 off: the finite range again);
+ * tolerance 0.01 p*. */
+static void
+test_johnson(void)
+{
+	const size_t nx = 256, ny = 4;
+	const double A = 2, L = 256, dgamma = 0.00694, ps = M_PI * A / L;
+	double worst[2] = { 0, 0 }, rho[2] = { 0.1, 0.2 };
+	double delta[5] = { 1.9, 1.5, 1, 0.5, 0 };
+	rc_grid *g = sine(nx, ny, A);
+
+	for (int r = 0; r < 2; r++) {
+		rc_solver *s = adhesive(g, dgamma, rho[r], 1e-8);
+		int status = 0;
+
+		for (int i = 0; i < 5; i++) {
+			double p = at_approach(s, delta[i], &status, NULL);
+			double a = 0.5 * (double)n_contact(s, nx * ny) / (double)ny;
+			double e = fabs(p - johnson(a, L, A, dgamma)) / ps;
+
+			if (e > worst[r])
+				worst[r] = e;
+		}
+		test_int(status, 0, "Johnson rho %g: every solve converges",
+		    rho[r]);
+		if (r == 0) {
+			double pmin = HUGE_VAL, tmin = HUGE_VAL;
+
+			test_range(worst[0], 0, 0.02, "Johnson rho 0.1: max "
+			    "|p - p(a)| / p* over 5 approaches");
+			/* pull-off: the least p along the unloading, against
+			 * the least p(a) */
+			for (double d = 0; d > -1; d -= 0.02) {
+				double p = at_approach(s, d, NULL, NULL);
+
+				if (n_contact(s, nx * ny) == 0)
+					break;
+				pmin = fmin(pmin, p);
+			}
+			for (double a = 0.01; a < 60; a += 0.01)
+				tmin = fmin(tmin, johnson(a, L, A, dgamma));
+			test_abs(tmin / ps, -0.0958, 5e-4, "Johnson: min p(a) / p* "
+			    "at alpha 0.3");
+			test_abs(pmin / ps, tmin / ps, 0.01, "Johnson: pull-off "
+			    "p / p*");
+		}
+		rc_solver_free(s);
+	}
+	test_true(worst[0] < worst[1], "Johnson: the error falls with the "
+	    "range (%.4f p* at rho 0.1, %.4f at 0.2)", worst[0], worst[1]);
+	rc_grid_free(g);
+}
+
+/* dgamma -> 0: a rough 64^2 surface at p* = 0.05; dgamma = 1e-9 (rho =
+ * 0.01 L) changes p by at most dgamma / rho = 1e-7 locally: the same
+ * contact set, the mean gap within 1e-6 (measured 3e-8). */
+static void
+test_vanishing(void)
+{
+	rc_synth_params sp;
+	rc_solver_opts o;
+	rc_solve_result res;
+	rc_err err;
+	rc_grid *g;
+	rc_solver *plain, *adh;
+	double p;
+	size_t n = 64 * 64, same = 0;
+
+	rc_synth_defaults(&sp);
+	sp.nx = sp.ny = 64;
+	sp.seed = 5;
+	sp.rms_gradient = 1;
+	g = rc_synth(&sp, &err);
+	if (g == NULL) {
+		fprintf(stderr, "%s\n", err.msg);
+		exit(1);
+	}
+	p = 0.05;		/* E* gbar = 1 */
+	rc_solver_defaults(&o);
+	o.tol = 1e-9;
+	plain = rc_solver_new(g, &o, &err);
+	adh = adhesive(g, 1e-9, 0.01, 1e-9);
+	test_int(rc_solver_solve(plain, p, &res, &err), 0, "dgamma -> 0: plain "
+	    "converges");
+	test_int(rc_solver_solve(adh, p, &res, &err), 0, "dgamma -> 0: "
+	    "adhesive converges");
+	for (size_t k = 0; k < n; k++)
+		same += rc_solver_contact(plain)[k] == rc_solver_contact(adh)[k];
+	test_int((long long)same, (long long)n, "dgamma -> 0: the same contact "
+	    "set");
+	test_rel(rc_solver_mean_gap(adh), rc_solver_mean_gap(plain), 1e-6,
+	    "dgamma -> 0: mean gap");
+	test_range(-rc_solver_adhesive_pressure(adh), 0, 1e-7, "dgamma -> 0: "
+	    "p_adh");
+	rc_solver_free(plain);
+	rc_solver_free(adh);
+	rc_grid_free(g);
+}
+
+/* Hysteresis at the same load (the sphere's is in test_jkr).  Sine
+ * (alpha 0.3, rho 0.1) under load control: Johnson's p(a) peaks at
+ * 0.39 p* (psi = 1.2), so loading to 0.5 p* jumps to full contact, which
+ * unloading keeps: at 0.2 p* the unloading a_r is 1, the loading one on
+ * Johnson's stable branch (a within 2 pixels; measured 0.5). */
+static void
+test_hysteresis(void)
+{
+	const size_t nx = 256, ny = 4;
+	const double A = 2, L = 256, dgamma = 0.00694, ps = M_PI * A / L;
+	double load[5] = { 0.2, 0.5, 0.2, 0, -0.05 }, ar[5];
+	rc_grid *g = sine(nx, ny, A);
+	rc_solver *s = adhesive(g, dgamma, 0.1, 1e-8);
+	rc_solve_result res;
+	rc_err err;
+	int status = 0;
+
+	/* onto the loading branch from outside: displacement control to a
+	 * partial contact, then load control */
+	at_approach(s, -0.5, &status, NULL);
+	at_approach(s, 1, &status, NULL);
+	for (int i = 0; i < 5; i++) {
+		if (rc_solver_solve(s, load[i] * ps, &res, &err) != 0)
+			status = 1;
+		ar[i] = (double)n_contact(s, nx * ny) / (double)(nx * ny);
+	}
+	test_int(status, 0, "hysteresis sine: every load converges");
+	{
+		/* the stable root of p(a) = 0.2 p* by bisection on [L/8, 0.38 L] */
+		double lo = L / 8, hi = 0.38 * L;
+
+		for (int it = 0; it < 60; it++) {
+			double mid = 0.5 * (lo + hi);
+
+			if (johnson(mid, L, A, dgamma) > 0.2 * ps)
+				hi = mid;
+			else
+				lo = mid;
+		}
+		test_abs(ar[0] * L / 2, lo, 2, "hysteresis sine: loading a at "
+		    "0.2 p* on Johnson's stable branch");
+	}
+	test_rel(ar[1], 1, 0, "hysteresis sine: full contact at 0.5 p*");
+	test_rel(ar[2], 1, 0, "hysteresis sine: unloading keeps full contact "
+	    "at 0.2 p*");
+	test_true(ar[2] > ar[0], "hysteresis sine: a_r unloading %.3f > "
+	    "loading %.3f at 0.2 p*", ar[2], ar[0]);
+	test_rel(ar[4], 1, 0, "hysteresis sine: full contact holds at -0.05 "
+	    "p* (tension below sigma_max - p*)");
+	rc_solver_free(s);
+	rc_grid_free(g);
+}
+
+/* Warm start: solving the same approach again takes no iterations (the
+ * state is already the solution); refusals. */
+static void
+test_warm_and_refusals(void)
+{
+	rc_grid *g = sphere(64, 20);
+	rc_solver *s = adhesive(g, 0.1, 0.5, 1e-8);
+	rc_solver_opts o;
+	rc_err err;
+	long it1, it2;
+
+	at_approach(s, 1, NULL, &it1);
+	at_approach(s, 1, NULL, &it2);
+	test_true(it1 > 5 && it2 <= 1, "warm start: %ld iterations, then %ld "
+	    "for the same approach", it1, it2);
+	rc_solver_free(s);
+	rc_solver_defaults(&o);
+	o.adhesion = 0.1;
+	o.range = 0.5;
+	o.method = RC_METHOD_CG;
+	test_true(rc_solver_new(g, &o, &err) == NULL && strstr(err.msg, "FIRE"),
+	    "CG refused, naming FIRE: %s", err.msg);
+	o.method = RC_METHOD_FIRE;
+	o.boundary = RC_BOUNDARY_FREE;
+	test_true(rc_solver_new(g, &o, &err) == NULL, "free boundaries refused");
+	o.boundary = RC_BOUNDARY_PERIODIC;
+	o.range = 0;
+	test_true(rc_solver_new(g, &o, &err) == NULL, "range 0 refused");
+	rc_grid_free(g);
+}
+
+int
+main(void)
+{
+	test_law();
+	test_dmt();
+	test_jkr();
+	test_johnson();
+	test_vanishing();
+	test_hysteresis();
+	test_warm_and_refusals();
+	return test_summary();
+}
