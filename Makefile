@@ -255,4 +255,7 @@ $(MPI_BIN)/%: $(MPI_O)/tools/mpi/%.o $(MPI_TOOL_OBJ) $(MPI_LIB_OBJ) $(COMMON_OBJ
 -include $(MPI_LIB_OBJ:.o=.d) $(MPI_TOOL_OBJ:.o=.d) $(MPI_TOOLS:$(MPI_BIN)/%=$(MPI_O)/tools/mpi/%.d)
 endif
 
--include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d)
+# the test helpers' and benchmarks' too: a stale free_cases.o keeps an
+# old rc_solver_opts layout
+-include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d) \
+	$(TESTLIB_OBJ:.o=.d) $(BENCH_SRC:%.c=$(O)/%.d)
