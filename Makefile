@@ -83,8 +83,10 @@ TOOLS    = $(TOOL_SRC:tools/%.c=$(BIN)/%)
 COMMON_OBJ = $(TOOL_SHARED:%.c=$(O)/%.o)
 TEST_SRC = $(wildcard tests/test_*.c)
 TESTS    = $(TEST_SRC:tests/%.c=$(O)/tests/%)
-# free_cases: the closed-form free-boundary problems, also bench_free's
-TESTLIB_OBJ = $(O)/tests/testlib.o $(O)/tests/free_cases.o
+# free_cases: the closed-form free-boundary problems, also bench_free's;
+# rough_cases: the rough surface and solver set-up, also bench_gfmd's
+TESTLIB_OBJ = $(O)/tests/testlib.o $(O)/tests/free_cases.o \
+	$(O)/tests/rough_cases.o
 MAN1 = $(wildcard man/man1/*.1)
 MAN3 = $(wildcard man/man3/*.3)
 MAN5 = $(wildcard man/man5/*.5)
@@ -116,6 +118,8 @@ $(O)/tests/test_%: $(O)/tests/test_%.o $(TESTLIB_OBJ) $(LIB)
 $(O)/bench/bench_%: $(O)/bench/bench_%.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 $(O)/bench/bench_free: $(O)/bench/bench_free.o $(O)/tests/free_cases.o $(LIB)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+$(O)/bench/bench_gfmd: $(O)/bench/bench_gfmd.o $(O)/tests/rough_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
 check: $(TOOLS) $(TESTS)
@@ -208,7 +212,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
-FUZZ_READ_SRC = lib/io.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
+FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
 FUZZ_ROWS_SRC = lib/table_read.c lib/rc_err.c
@@ -224,16 +228,17 @@ build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/table_read.h
 
 # make MPI=1: also the MPI builds of surfgen and gfmd-solve (lib/mpi/,
 # tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin
-# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/.  lib/solver_fire.c,
-# lib/elastic.c and lib/solver.c are compiled again with -DRC_MPI; the rest
-# of the library is the serial one.  make check-mpi tests them against the
-# serial tools with 1, 2 and 3 ranks (tests/mpi/check.sh).
+# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/: the serial library
+# as it is plus lib/mpi/*.o, whose distributed elastic operator
+# (lib/mpi/delastic.c) implements the seam of lib/elastic.h through which
+# the serial solver sums over all ranks; no object is built twice.  make
+# check-mpi tests them against the serial tools with 1, 2 and 3 ranks
+# (tests/mpi/check.sh).
 MPICC ?= mpicc
 MPI_O = build/mpi
 MPI_BIN = build/mpi/bin
 MPI_TOOLS = $(MPI_BIN)/surfgen $(MPI_BIN)/gfmd-solve
-MPI_LIB_OBJ = $(addprefix $(MPI_O)/lib/,solver_fire.o elastic.o solver.o) \
-	$(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
+MPI_LIB_OBJ = $(patsubst %.c,$(MPI_O)/%.o,$(wildcard lib/mpi/*.c))
 MPI_TOOL_OBJ = $(MPI_O)/tools/mpi/mpitool.o
 .PHONY: check-mpi
 check-mpi:
@@ -243,11 +248,14 @@ ifeq ($(MPI),1)
 all: $(MPI_TOOLS)
 $(MPI_O)/%.o: %.c
 	@mkdir -p $(dir $@)
-	$(MPICC) $(ALL_CFLAGS) -DRC_MPI -MMD -MP -c -o $@ $<
+	$(MPICC) $(ALL_CFLAGS) -MMD -MP -c -o $@ $<
 $(MPI_BIN)/%: $(MPI_O)/tools/mpi/%.o $(MPI_TOOL_OBJ) $(MPI_LIB_OBJ) $(COMMON_OBJ) $(LIB)
 	@mkdir -p $(dir $@)
 	$(MPICC) $(ALL_LDFLAGS) -o $@ $^ -lfftw3_mpi $(LDLIBS)
 -include $(MPI_LIB_OBJ:.o=.d) $(MPI_TOOL_OBJ:.o=.d) $(MPI_TOOLS:$(MPI_BIN)/%=$(MPI_O)/tools/mpi/%.d)
 endif
 
--include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d)
+# the test helpers' and benchmarks' too: a stale free_cases.o keeps an
+# old rc_solver_opts layout
+-include $(LIB_OBJ:.o=.d) $(COMMON_OBJ:.o=.d) $(TEST_SRC:%.c=$(O)/%.d) $(TOOL_SRC:%.c=$(O)/%.d) \
+	$(TESTLIB_OBJ:.o=.d) $(BENCH_SRC:%.c=$(O)/%.d)

@@ -62,6 +62,7 @@
 #include <unistd.h>
 
 #include "fft.h"
+#include "../tests/rough_cases.h"
 #include "solver.h"
 #include "synth.h"
 #include "threads.h"
@@ -117,37 +118,8 @@ fft_pair_seconds(size_t n, double *cpu)
 	return t0;
 }
 
-static double
-contact_fraction(const rc_solver *s, size_t nn)
-{
-	const unsigned char *c = rc_solver_contact(s);
-	size_t k, nc = 0;
-
-	for (k = 0; k < nn; k++)
-		nc += c[k];
-	return (double)nc / (double)nn;
-}
-
-/* The benchmark's surface on an n^2 grid; NULL after a message. */
-static rc_grid *
-surface(size_t n)
-{
-	rc_synth_params sp;
-	rc_err err;
-	rc_grid *g;
-
-	rc_synth_defaults(&sp);
-	sp.nx = sp.ny = n;
-	sp.lx = sp.ly = 1;
-	sp.hurst = 0.8;
-	sp.lambda_r = 0.5;
-	sp.lambda_s = 1.0 / 64;
-	sp.seed = 1;
-	sp.rms_gradient = 1;
-	if ((g = rc_synth(&sp, &err)) == NULL)
-		fprintf(stderr, "bench_gfmd: %s\n", err.msg);
-	return g;
-}
+/* The benchmark's surface on an n^2 grid: lambda_s = L/64, seed 1. */
+#define SURFACE(n)	rc_test_rough((n), 1.0 / 64, 1)
 
 /* A solve at p* = 0.05 and tolerance tol; the solver (NULL after a
  * message), its result and the process CPU seconds of the solve. */
@@ -227,7 +199,7 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 	if ((s = solve(g, RC_METHOD_FIRE, b, 1e-10, 0, 0, RC_FFT_BLOCKED_POINTS,
 	    0, &r, &cpu)) == NULL)
 		return -1;
-	ref = contact_fraction(s, nn);
+	ref = (double)rc_test_n_contact(s, nn) / (double)nn;
 	rc_solver_free(s);
 	for (m = 0; m < (int)(sizeof(rows) / sizeof(rows[0])); m++) {
 		const struct bench_row *w = &rows[m];
@@ -241,7 +213,7 @@ bench_boundary(const rc_grid *g, size_t n, enum rc_boundary b)
 		    w->thickness, w->plain ? SIZE_MAX : RC_FFT_BLOCKED_POINTS,
 		    w->adhesive, &r, &cpu)) == NULL)
 			return -1;
-		ar = contact_fraction(s, nn);
+		ar = (double)rc_test_n_contact(s, nn) / (double)nn;
 		iters = (double)(r.iterations ? r.iterations : 1);
 		printf("%zu\t%s\t%s\t%ld\t%.0f\t%.2f\t%.3f\t%.5f\t%.2f\t%.2f\t"
 		    "%.1f\t%.1f\t%.6f\t%.1e\n",
@@ -309,12 +281,10 @@ contention(void)
 {
 	double t[2][2][CONTENTION_ROUNDS], med[2][2], cpu;
 	int def = rc_fft_set_threads(0), busy, j, round;
-	rc_grid *g = surface(CONTENTION_N);
+	rc_grid *g = SURFACE(CONTENTION_N);
 	rc_solve_result r;
 	rc_solver *s;
 
-	if (g == NULL)
-		return 1;
 	for (round = 0; round < CONTENTION_ROUNDS; round++)
 		for (busy = 0; busy < 2; busy++)
 			for (j = 0; j < 2; j++) {
@@ -367,10 +337,8 @@ main(int argc, char **argv)
 	    "bytes_solver\tbytes_rss\ta_r\ta_r_relerr\n");
 	for (z = 0; z < ns; z++) {
 		size_t n = sizes[z];
-		rc_grid *g;
+		rc_grid *g = SURFACE(n);
 
-		if ((g = surface(n)) == NULL)
-			return 1;
 		if (bench_boundary(g, n, RC_BOUNDARY_PERIODIC) != 0 ||
 		    ((n <= 1024 || ns == 5) &&
 		    bench_boundary(g, n, RC_BOUNDARY_FREE) != 0))

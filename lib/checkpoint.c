@@ -438,6 +438,8 @@ parse_list(rc_checkpoint *c, const char *s, rc_err *err)
 	return 0;
 }
 
+/* Long: the checkpoint's header keys in file order, each checked where
+ * read. */
 int
 rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
     rc_err *err)

@@ -8,17 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gradient.h"
 #include "kappa.h"
 #include "spectral.h"
-
-/* Eq. 9's (gbar_c')^2 = -<dh lap h>_c can be negative over a partial
- * contact (dh about the contact mean): return its signed square root,
- * sign(x) sqrt(|x|), so the column is never NaN and squares back to x. */
-static double
-signed_root(double x)
-{
-	return x == 0 ? 0 : copysign(sqrt(fabs(x)), x);
-}
 
 void
 rc_contact_defaults(rc_contact_opts *o)
@@ -199,115 +191,6 @@ masked_sum_dh(const double *f, const double *h, double hbar,
 	return sum;
 }
 
-/* Central differences at every point (contact NULL) or at the contact
- * points: sum of |grad h|^2 into *grad2 and of (h - hbar) lap h into
- * *dh_lap.  An axis of length 1 has no derivative (the neighbours are the
- * point itself). */
-static void
-fd_sums(const rc_grid *h, const unsigned char *contact, double hbar,
-    double *grad2, double *dh_lap)
-{
-	size_t nx = h->nx, ny = h->ny;
-	double dx = h->lx / (double)nx, dy = h->ly / (double)ny;
-	double sum_g = 0, sum_l = 0;
-	const double *z = h->z;
-
-	#pragma omp parallel for reduction(+:sum_g, sum_l) schedule(static)
-	for (size_t j = 0; j < ny; j++) {
-		const double *row = z + j * nx;
-		const double *up = z + (j + 1 < ny ? j + 1 : 0) * nx;
-		const double *down = z + (j > 0 ? j - 1 : ny - 1) * nx;
-		double row_g = 0, row_l = 0;
-		for (size_t i = 0; i < nx; i++) {
-			if (contact != NULL && !contact[j * nx + i])
-				continue;
-			size_t left = i > 0 ? i - 1 : nx - 1;
-			size_t right = i + 1 < nx ? i + 1 : 0;
-			double hx = (row[right] - row[left]) / (2 * dx);
-			double hy = (up[i] - down[i]) / (2 * dy);
-			double lap = (row[right] - 2 * row[i] + row[left]) / (dx * dx) +
-			    (up[i] - 2 * row[i] + down[i]) / (dy * dy);
-			row_g += hx * hx + hy * hy;
-			row_l += (row[i] - hbar) * lap;
-		}
-		sum_g += row_g;
-		sum_l += row_l;
-	}
-	*grad2 = sum_g;
-	*dh_lap = sum_l;
-}
-
-/* Index of the centre of the 3-point second difference at i on n points
- * without wrap-around (n >= 3). */
-static size_t
-interior(size_t i, size_t n)
-{
-	return i == 0 ? 1 : i + 1 == n ? n - 2 : i;
-}
-
-/* fd_sums on a finite patch (contact.h). */
-static void
-fd_sums_open(const rc_grid *h, const unsigned char *contact, double hbar,
-    double *grad2, double *dh_lap)
-{
-	size_t nx = h->nx, ny = h->ny;
-	double dx = h->lx / (double)nx, dy = h->ly / (double)ny;
-	double sum_g = 0, sum_l = 0;
-	const double *z = h->z;
-
-	#pragma omp parallel for reduction(+:sum_g, sum_l) schedule(static)
-	for (size_t j = 0; j < ny; j++) {
-		size_t up = j + 1 < ny ? j + 1 : j, down = j > 0 ? j - 1 : j;
-		double row_g = 0, row_l = 0;
-		for (size_t i = 0; i < nx; i++) {
-			size_t k = j * nx + i, right = i + 1 < nx ? i + 1 : i;
-			size_t left = i > 0 ? i - 1 : i;
-			double hx = 0, hy = 0, lap = 0;
-
-			if (contact != NULL && !contact[k])
-				continue;
-			if (right > left)
-				hx = (z[j * nx + right] - z[j * nx + left]) /
-				    ((double)(right - left) * dx);
-			if (up > down)
-				hy = (z[up * nx + i] - z[down * nx + i]) /
-				    ((double)(up - down) * dy);
-			if (nx >= 3) {
-				const double *c = z + j * nx + interior(i, nx);
-				lap += (c[1] - 2 * c[0] + c[-1]) / (dx * dx);
-			}
-			if (ny >= 3) {
-				const double *c = z + interior(j, ny) * nx + i;
-				lap += (c[nx] - 2 * c[0] + c[-(ptrdiff_t)nx]) / (dy * dy);
-			}
-			row_g += hx * hx + hy * hy;
-			row_l += (z[k] - hbar) * lap;
-		}
-		sum_g += row_g;
-		sum_l += row_l;
-	}
-	*grad2 = sum_g;
-	*dh_lap = sum_l;
-}
-
-double
-rc_contact_gbar_open(const rc_grid *h)
-{
-	double grad2, dh_lap;
-
-	fd_sums_open(h, NULL, 0, &grad2, &dh_lap);
-	return sqrt(grad2 / (double)rc_grid_size(h));
-}
-
-double
-rc_contact_gbar_fd(const rc_grid *h)
-{
-	double grad2, dh_lap;
-
-	fd_sums(h, NULL, 0, &grad2, &dh_lap);
-	return sqrt(grad2 / (double)rc_grid_size(h));
-}
-
 static int
 gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
     rc_fft *fft, int fd, int nonperiodic, rc_contact_stats *st, rc_err *err)
@@ -321,21 +204,14 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 		return 0;	/* NaN: no contact to average over */
 	hbar = masked_sum_dh(NULL, h->z, 0, contact, nx, ny) / (double)n_c;
 	if (fd || nonperiodic) {
-		if (nonperiodic)
-			fd_sums_open(h, contact, hbar, &sum, &dh_lap);
-		else
-			fd_sums(h, contact, hbar, &sum, &dh_lap);
+		rc_deriv_sums(h, contact, hbar, nonperiodic, &sum, &dh_lap);
 		st->gbar_c = sqrt(sum / (double)n_c);
 		sum = -dh_lap / (double)n_c;
-		st->gbar_c_prime = signed_root(sum);
+		st->gbar_c_prime = rc_signed_root(sum);
 		return 0;
 	}
-	memset(&own, 0, sizeof(own));
-	if (fft == NULL) {
-		if (rc_fft_init(&own, nx, ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = &own;
-	}
+	if ((fft = rc_fft_borrow(fft, &own, nx, ny, err)) == NULL)
+		return -1;
 	if (rc_spectral_deriv(h, fft, RC_DERIV_X, err) != 0)
 		goto out;
 	sum = masked_sum_sq(fft->real, contact, nx, ny);
@@ -346,7 +222,7 @@ gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
 	if (rc_spectral_deriv(h, fft, RC_DERIV_LAPLACIAN, err) != 0)
 		goto out;
 	sum = -masked_sum_dh(fft->real, h->z, hbar, contact, nx, ny) / (double)n_c;
-	st->gbar_c_prime = signed_root(sum);
+	st->gbar_c_prime = rc_signed_root(sum);
 	rv = 0;
 out:
 	if (fft == &own)

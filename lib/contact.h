@@ -85,11 +85,8 @@ void rc_contact_defaults(rc_contact_opts *o);
 int rc_contact_analyse(const rc_grid *h, const unsigned char *contact,
     const rc_contact_opts *o, rc_contact_stats *st, rc_err *err);
 
-/* rms of the central-difference gradient over the whole grid (the
- * finite-difference counterpart of rc_rms_gradient). */
-double rc_contact_gbar_fd(const rc_grid *h);
-/* The same without wrap-around (a finite patch; above). */
-double rc_contact_gbar_open(const rc_grid *h);
+/* The rms gradient of the whole grid by the central and open stencils:
+ * rc_gbar_central and rc_gbar_open (gradient.h). */
 
 /* Sub-pixel contact area from a solution (periodic grids), a fraction
  * of the cell.  The raw count n_c puts the contact line on the midpoint

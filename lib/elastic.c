@@ -7,74 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef RC_MPI
-/* The MPI build (make MPI=1): the operator runs on this rank's rows of
- * FFTW-MPI's slab decomposition (lib/mpi/decomp.h).  ny is then the local
- * row count, n stays the global point count (the normalisation), fft.ny
- * is the global row count and fft.real the padded (2 nxc per row) real
- * array of the MPI plans; fields passed in and out keep nx per row. */
-#include <fftw3-mpi.h>
-#include "mpi/decomp.h"
-
-static int
-mpi_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
-    double modulus, enum rc_fft_effort effort, rc_err *err)
-{
-	size_t i, j, rows, j0, alloc;
-	unsigned flags = effort == RC_FFT_ESTIMATE ? FFTW_ESTIMATE : FFTW_MEASURE;
-	double k_range[2];
-
-	rc_mpi_rows(nx, ny, &rows, &j0, &alloc);
-	e->nx = e->fft.nx = nx;
-	e->fft.ny = ny;
-	e->ny = rows;
-	e->nxc = e->fft.nxc = nx / 2 + 1;
-	e->n = nx * ny;
-	e->modulus = modulus;
-	e->fft.effort = effort;
-	e->fft.real = fftw_alloc_real(2 * alloc);
-	e->fft.spec = fftw_alloc_complex(alloc);
-	e->stiffness = fftw_alloc_real(alloc);
-	if (e->fft.real == NULL || e->fft.spec == NULL || e->stiffness == NULL) {
-		rc_elastic_free(e);
-		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers)",
-		    alloc * 4 * sizeof(double));
-	}
-	e->fft.forward = fftw_mpi_plan_dft_r2c_2d((ptrdiff_t)ny, (ptrdiff_t)nx,
-	    e->fft.real, e->fft.spec, MPI_COMM_WORLD, flags);
-	e->fft.backward = fftw_mpi_plan_dft_c2r_2d((ptrdiff_t)ny, (ptrdiff_t)nx,
-	    e->fft.spec, e->fft.real, MPI_COMM_WORLD, flags);
-	if (e->fft.forward == NULL || e->fft.backward == NULL) {
-		rc_elastic_free(e);
-		return rc_seterr(err, "FFTW-MPI could not plan a %zu x %zu transform",
-		    nx, ny);
-	}
-	e->k_min = HUGE_VAL;
-	e->k_max = 0;
-	for (j = 0; j < rows; j++) {
-		double qy = rc_wavenumber(j0 + j, ny, ly);
-
-		for (i = 0; i < e->nxc; i++) {
-			double k = 0.5 * modulus * hypot(rc_wavenumber(i, nx, lx), qy);
-
-			e->stiffness[j * e->nxc + i] = k;
-			if (k > e->k_max)
-				e->k_max = k;
-			if (k > 0 && k < e->k_min)
-				e->k_min = k;
-		}
-	}
-	k_range[0] = -e->k_min;
-	k_range[1] = e->k_max;
-	rc_mpi_max(k_range, 2);
-	e->k_min = -k_range[0];
-	e->k_max = k_range[1];
-	if (e->n == 1)
-		e->k_min = e->k_max = 0.5 * modulus * 2 * M_PI / (lx < ly ? lx : ly);
-	return 0;
-}
-#endif
-
 int
 rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
     double modulus, enum rc_fft_effort effort, rc_err *err)
@@ -84,9 +16,6 @@ rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
 	memset(e, 0, sizeof(*e));
 	if (!(modulus > 0) || !isfinite(modulus))
 		return rc_seterr(err, "contact modulus must be positive and finite");
-#ifdef RC_MPI
-	return mpi_init(e, nx, ny, lx, ly, modulus, effort, err);
-#endif
 	if (rc_fft_init(&e->fft, nx, ny, effort, err) != 0)
 		return -1;
 	e->nx = nx;
@@ -125,17 +54,11 @@ int
 rc_elastic_set_layer(rc_elastic *e, double lx, double ly, double thickness,
     enum rc_substrate substrate, double poisson, rc_err *err)
 {
-#ifdef RC_MPI
-	(void)e;
-	(void)lx;
-	(void)ly;
-	(void)thickness;
-	(void)substrate;
-	(void)poisson;
-	return rc_seterr(err, "a finite thickness is not in the MPI build");
-#else
 	size_t i, j;
 
+	/* Its table runs over the global rows. */
+	if (e->dist != NULL)
+		return rc_seterr(err, "a finite thickness is not in the MPI build");
 	if (rc_layer_check(thickness, substrate, poisson, err) < 0)
 		return -1;
 	if (e->kernel != RC_KERNEL_CONTINUUM)
@@ -163,7 +86,6 @@ rc_elastic_set_layer(rc_elastic *e, double lx, double ly, double thickness,
 		}
 	}
 	return 0;
-#endif
 }
 
 const char *
@@ -241,54 +163,47 @@ int
 rc_elastic_set_kernel(rc_elastic *e, double lx, double ly,
     enum rc_kernel kernel, rc_err *err)
 {
+	size_t i, j, nxc = e->nxc, ny = e->ny;
+	double dx = lx / (double)e->nx, dy = ly / (double)ny;
+	double kmin = HUGE_VAL, kmax = 0;
+
 	if (kernel == RC_KERNEL_CONTINUUM)
 		return 0;
 	if (kernel != RC_KERNEL_PIXEL)
 		return rc_seterr(err, "unknown elastic kernel %d", (int)kernel);
-#ifdef RC_MPI
-	(void)e;
-	(void)lx;
-	(void)ly;
-	return rc_seterr(err, "the pixel kernel is not in the MPI build");
-#else
-	{
-		size_t i, j, nxc = e->nxc, ny = e->ny;
-		double dx = lx / (double)e->nx, dy = ly / (double)ny;
-		double kmin = HUGE_VAL, kmax = 0;
-
-		e->kernel = kernel;
-		if (e->n == 1)
-			return 0;	/* no mode but the uniform one: scales kept */
-		/* Even in qy: rows j and ny - j are the same; compute the first
-		 * half and copy. */
+	if (e->dist != NULL)
+		return rc_seterr(err, "the pixel kernel is not in the MPI build");
+	e->kernel = kernel;
+	if (e->n == 1)
+		return 0;	/* no mode but the uniform one: scales kept */
+	/* Even in qy: rows j and ny - j are the same; compute the first
+	 * half and copy. */
 #pragma omp parallel for private(i) schedule(dynamic, 4)
-		for (j = 0; j <= ny / 2; j++) {
-			double qy = rc_wavenumber(j, ny, ly);
+	for (j = 0; j <= ny / 2; j++) {
+		double qy = rc_wavenumber(j, ny, ly);
 
-			for (i = 0; i < nxc; i++) {
-				double g = rc_pixel_compliance(rc_wavenumber(i,
-				    e->nx, lx), qy, dx, dy);
+		for (i = 0; i < nxc; i++) {
+			double g = rc_pixel_compliance(rc_wavenumber(i,
+			    e->nx, lx), qy, dx, dy);
 
-				e->stiffness[j * nxc + i] = g > 0 ?
-				    e->modulus / g : 0;
-			}
+			e->stiffness[j * nxc + i] = g > 0 ?
+			    e->modulus / g : 0;
 		}
-		for (j = ny / 2 + 1; j < ny; j++)
-			memcpy(e->stiffness + j * nxc, e->stiffness +
-			    (ny - j) * nxc, nxc * sizeof(double));
-		for (i = 0; i < nxc * ny; i++) {
-			double k = e->stiffness[i];
-
-			if (k > kmax)
-				kmax = k;
-			if (k > 0 && k < kmin)
-				kmin = k;
-		}
-		e->k_min = kmin;
-		e->k_max = kmax;
-		return 0;
 	}
-#endif
+	for (j = ny / 2 + 1; j < ny; j++)
+		memcpy(e->stiffness + j * nxc, e->stiffness +
+		    (ny - j) * nxc, nxc * sizeof(double));
+	for (i = 0; i < nxc * ny; i++) {
+		double k = e->stiffness[i];
+
+		if (k > kmax)
+			kmax = k;
+		if (k > 0 && k < kmin)
+			kmin = k;
+	}
+	e->k_min = kmin;
+	e->k_max = kmax;
+	return 0;
 }
 
 void
@@ -302,103 +217,54 @@ rc_elastic_free(rc_elastic *e)
 void
 rc_elastic_r2c(rc_elastic *e, const double *in, fftw_complex *out)
 {
-#ifdef RC_MPI
-	/* Rows of nx into the plan's padded rows, last first (in may be the
-	 * padded array itself). */
-	for (size_t j = e->ny; j-- > 0;)
-		memmove(e->fft.real + j * 2 * e->nxc, in + j * e->nx,
-		    e->nx * sizeof(double));
-	fftw_mpi_execute_dft_r2c(e->fft.forward, e->fft.real, out);
-#else
-	fftw_execute_dft_r2c(e->fft.forward, (double *)in, out);
-#endif
+	if (e->dist != NULL)
+		e->dist->r2c(e, in, out);
+	else
+		fftw_execute_dft_r2c(e->fft.forward, (double *)in, out);
 	e->n_r2c++;
 }
 
 void
 rc_elastic_c2r(rc_elastic *e, fftw_complex *in, double *out)
 {
-#ifdef RC_MPI
-	fftw_mpi_execute_dft_c2r(e->fft.backward, in, e->fft.real);
-	for (size_t j = 0; j < e->ny; j++)
-		memmove(out + j * e->nx, e->fft.real + j * 2 * e->nxc,
-		    e->nx * sizeof(double));
-#else
-	fftw_execute_dft_c2r(e->fft.backward, in, out);
-#endif
+	if (e->dist != NULL)
+		e->dist->c2r(e, in, out);
+	else
+		fftw_execute_dft_c2r(e->fft.backward, in, out);
 	e->n_c2r++;
 }
-
-/* spec *= factor(k) / N, factor(0) = 0, on the real and imaginary parts
- * as doubles (a complex-times-real product may be compiled as a full
- * complex one, which the vectoriser leaves alone); the products are the
- * same.  K: k/N is 0 at k = 0 without a branch. */
-#ifdef RC_MPI
-static void
-scale_spec(rc_elastic *e, int inverse)
-{
-	size_t m, nm = e->nxc * e->ny;
-	double inv_n = 1.0 / (double)e->n, *z = (double *)e->fft.spec;
-	const double *k = e->stiffness;
-
-	if (!inverse) {
-#pragma omp parallel for schedule(static)
-		for (m = 0; m < nm; m++) {
-			double f = k[m] * inv_n;
-
-			z[2 * m] *= f;
-			z[2 * m + 1] *= f;
-		}
-		return;
-	}
-#pragma omp parallel for schedule(static)
-	for (m = 0; m < nm; m++) {
-		double f = k[m] > 0 ? 1.0 / k[m] * inv_n : 0;
-
-		z[2 * m] *= f;
-		z[2 * m + 1] *= f;
-	}
-}
-#endif
 
 void
 rc_elastic_force(rc_elastic *e, const double *u, double *out)
 {
-#ifdef RC_MPI
-	rc_elastic_r2c(e, u, e->fft.spec);
-	scale_spec(e, 0);
-	rc_elastic_c2r(e, e->fft.spec, out);
-#else
 	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 0, 0 };
 
 	rc_elastic_convolve(e, u, out, &mu);
-#endif
 }
 
 void
 rc_elastic_displacement(rc_elastic *e, const double *sigma, double *out)
 {
-#ifdef RC_MPI
-	rc_elastic_r2c(e, sigma, e->fft.spec);
-	scale_spec(e, 1);
-	rc_elastic_c2r(e, e->fft.spec, out);
-#else
 	rc_fft_multiplier mu = { e->stiffness, 1.0 / (double)e->n, 1, 0 };
 
 	rc_elastic_convolve(e, sigma, out, &mu);
-#endif
 }
 
-#ifndef RC_MPI
 void
 rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
     const rc_fft_multiplier *mu)
 {
+	if (e->dist != NULL) {
+		/* the distributed transforms, through the seam */
+		rc_elastic_r2c(e, in, e->fft.spec);
+		rc_fft_multiply(e->fft.spec, e->nxc * e->ny, mu);
+		rc_elastic_c2r(e, e->fft.spec, out);
+		return;
+	}
 	rc_fft_convolve(&e->fft, in, out, mu);
 	e->n_r2c++;
 	e->n_c2r++;
 }
-#endif
 
 double
 rc_elastic_energy_spec(const rc_elastic *e, const fftw_complex *spec)
@@ -414,10 +280,22 @@ rc_elastic_energy_spec(const rc_elastic *e, const fftw_complex *spec)
 
 			sum += rc_fft_weight(i, e->nx) * e->stiffness[m] * (a * a + b * b);
 		}
-#ifdef RC_MPI
-	rc_mpi_sum(&sum, 1);
-#endif
+	rc_elastic_sum(e, &sum, 1);
 	return 0.5 * sum / n2;
+}
+
+void
+rc_elastic_sum(const rc_elastic *e, double *v, int count)
+{
+	if (e->dist != NULL)
+		e->dist->sum(v, count);
+}
+
+void
+rc_elastic_max(const rc_elastic *e, double *v, int count)
+{
+	if (e->dist != NULL)
+		e->dist->max(v, count);
 }
 
 size_t

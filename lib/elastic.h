@@ -70,8 +70,24 @@ enum rc_kernel {
 const char *rc_kernel_name(enum rc_kernel k);
 int rc_kernel_parse(const char *name);		/* -1 if unknown */
 
+struct rc_elastic;
+
+/* The seam to a distributed build (make MPI=1; lib/mpi/delastic.c
+ * implements it): an operator with dist set holds this process's rows of
+ * the grid (ny and the fields local, n the global point count), its
+ * transforms run through r2c and c2r, and every sum or maximum over
+ * points, here and in the solver, is completed through sum and max (in
+ * place, over all processes).  NULL, the serial operator: no call goes
+ * through it, so one build of the library serves both. */
+typedef struct rc_elastic_dist {
+	void (*sum)(double *v, int count);
+	void (*max)(double *v, int count);
+	void (*r2c)(struct rc_elastic *e, const double *in, fftw_complex *out);
+	void (*c2r)(struct rc_elastic *e, fftw_complex *in, double *out);
+} rc_elastic_dist;
+
 typedef struct rc_elastic {
-	size_t nx, ny, nxc, n;	/* n = nx * ny */
+	size_t nx, ny, nxc, n;	/* n = nx * ny (dist: ny local, n global) */
 	double modulus;		/* E* */
 	double *stiffness;	/* k_q, ny * nxc, row j, column i */
 	double k_min, k_max;	/* smallest non-zero and largest k_q */
@@ -79,6 +95,7 @@ typedef struct rc_elastic {
 	rc_fft fft;
 	/* Transforms run through this operator (for the cost report). */
 	unsigned long n_r2c, n_c2r;
+	const rc_elastic_dist *dist;	/* NULL: serial (above) */
 } rc_elastic;
 
 int rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx,
@@ -87,7 +104,7 @@ void rc_elastic_free(rc_elastic *e);
 /* An elastic layer of the given thickness on a rigid substrate instead of
  * the half space: every k_q (q != 0) times rc_layer_factor(|q| d) (layer.h);
  * k_0 stays 0 (the uniform mode is the solver's, see solver.c).  Serial
- * build only. */
+ * operator only. */
 int rc_elastic_set_layer(rc_elastic *e, double lx, double ly,
     double thickness, enum rc_substrate substrate, double poisson, rc_err *err);
 
@@ -95,7 +112,7 @@ int rc_elastic_set_layer(rc_elastic *e, double lx, double ly,
  * nothing changes): every k_q (q != 0) becomes 1 / G_q of the pixel
  * compliance above; k_0 stays 0.  Before rc_elastic_set_layer, which
  * refuses to follow it (the layer's factor would have to weight every
- * image).  Serial build only. */
+ * image).  Serial operator only. */
 int rc_elastic_set_kernel(rc_elastic *e, double lx, double ly,
     enum rc_kernel kernel, rc_err *err);
 /* E* G_q of the pixel kernel for the wave vector (qx, qy) and pixel
@@ -112,12 +129,17 @@ void rc_elastic_force(rc_elastic *e, const double *u, double *out);
 /* out = G sigma (mean zero).  Uses fft.spec; out may be fft.real or sigma. */
 void rc_elastic_displacement(rc_elastic *e, const double *sigma, double *out);
 /* out = IFFT[c_q FFT(in)] with the multiplier mu (fft.h), one transform
- * pair counted.  Serial build only. */
+ * pair counted; a distributed operator's through its r2c and c2r. */
 void rc_elastic_convolve(rc_elastic *e, const double *in, double *out,
     const rc_fft_multiplier *mu);
 /* Elastic energy per unit area (1/2) sum_q k_q |u_q|^2 / N^2 of the
  * unnormalised spectrum U = FFT(u) (full-spectrum sum over half storage). */
 double rc_elastic_energy_spec(const rc_elastic *e, const fftw_complex *spec);
+
+/* v[0 .. count-1] summed, or maximised, over the processes a distributed
+ * operator spans, in place; nothing for a serial one. */
+void rc_elastic_sum(const rc_elastic *e, double *v, int count);
+void rc_elastic_max(const rc_elastic *e, double *v, int count);
 
 /* Bytes held (table and FFT buffers). */
 size_t rc_elastic_bytes(const rc_elastic *e);

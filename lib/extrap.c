@@ -255,6 +255,8 @@ rc_extrapolate(const double *eps, const double *y, size_t n,
 	return rc;
 }
 
+/* Long: the Richardson fit, its weights and its error estimate share the
+ * per-grid residuals. */
 static int
 extrapolate(const double *eps_in, const double *y, size_t n,
     const rc_extrap_opts *o, rc_fit *fit, double *weight, rc_err *err)

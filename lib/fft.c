@@ -267,6 +267,20 @@ rc_fft_free(rc_fft *f)
 	memset(f, 0, sizeof(*f));
 }
 
+rc_fft *
+rc_fft_borrow(rc_fft *given, rc_fft *own, size_t nx, size_t ny, rc_err *err)
+{
+	memset(own, 0, sizeof(*own));
+	if (given == NULL)
+		return rc_fft_init(own, nx, ny, RC_FFT_ESTIMATE, err) != 0 ? NULL : own;
+	if (given->nx != nx || given->ny != ny) {
+		rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
+		    given->nx, given->ny, nx, ny);
+		return NULL;
+	}
+	return given;
+}
+
 void
 rc_fft_forward(rc_fft *f)
 {
@@ -420,24 +434,12 @@ rc_fft_columns(rc_fft *f, const rc_fft_multiplier *mu)
 }
 
 void
-rc_fft_convolve(rc_fft *f, const double *in, double *out,
-    const rc_fft_multiplier *mu)
+rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 {
-	size_t nm = f->nxc * f->ny, nb = rc_fft_row_blocks(f), m, b;
-	double *z = (double *)f->spec;
+	double *z = (double *)spec;
 	const double *k = mu->k;
+	size_t m;
 
-	if (rc_fft_conv_blocked(f)) {
-#pragma omp parallel for schedule(static)
-		for (b = 0; b < nb; b++)
-			rc_fft_rows_r2c(f, in, b);
-		rc_fft_columns(f, mu);
-#pragma omp parallel for schedule(static)
-		for (b = 0; b < nb; b++)
-			rc_fft_rows_c2r(f, out, b);
-		return;
-	}
-	fftw_execute_dft_r2c(f->forward, (double *)in, f->spec);
 	if (!mu->inverse) {
 #pragma omp parallel for schedule(static)
 		for (m = 0; m < nm; m++) {
@@ -455,6 +457,26 @@ rc_fft_convolve(rc_fft *f, const double *in, double *out,
 			z[2 * m + 1] *= c;
 		}
 	}
+}
+
+void
+rc_fft_convolve(rc_fft *f, const double *in, double *out,
+    const rc_fft_multiplier *mu)
+{
+	size_t nb = rc_fft_row_blocks(f), b;
+
+	if (rc_fft_conv_blocked(f)) {
+#pragma omp parallel for schedule(static)
+		for (b = 0; b < nb; b++)
+			rc_fft_rows_r2c(f, in, b);
+		rc_fft_columns(f, mu);
+#pragma omp parallel for schedule(static)
+		for (b = 0; b < nb; b++)
+			rc_fft_rows_c2r(f, out, b);
+		return;
+	}
+	fftw_execute_dft_r2c(f->forward, (double *)in, f->spec);
+	rc_fft_multiply(f->spec, f->nxc * f->ny, mu);
 	fftw_execute_dft_c2r(f->backward, f->spec, out);
 }
 

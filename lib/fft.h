@@ -87,6 +87,11 @@ fftw_plan rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 int rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err);
 void rc_fft_free(rc_fft *f);
+/* The plan an analysis runs on: given, when not NULL (it must be nx x ny),
+ * else a new FFTW_ESTIMATE plan made in *own (zeroed first; the caller
+ * frees it with rc_fft_free, harmless when unused).  NULL on failure. */
+rc_fft *rc_fft_borrow(rc_fft *given, rc_fft *own, size_t nx, size_t ny,
+    rc_err *err);
 void rc_fft_forward(rc_fft *f);		/* real -> spec */
 void rc_fft_backward(rc_fft *f);	/* spec -> real (destroys spec) */
 
@@ -123,6 +128,10 @@ int rc_fft_conv_init(rc_fft *f, enum rc_fft_effort effort, size_t min_points,
     rc_err *err);
 void rc_fft_convolve(rc_fft *f, const double *in, double *out,
     const rc_fft_multiplier *m);
+/* spec[m] *= c_q for the nm half-complex values of spec and the table
+ * mu->k of the same layout (the unblocked convolution's step; also the
+ * distributed operator's, elastic.c). */
+void rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu);
 /* 1 if f takes the blocked path. */
 int rc_fft_conv_blocked(const rc_fft *f);
 /* The blocked path's stages, for a caller that works on each block of

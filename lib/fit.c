@@ -196,6 +196,8 @@ out:
 	return rc;
 }
 
+/* Long: the fit's stages (spectrum, range, start values, GSL solve,
+ * errors) share the binned spectrum and the fit state. */
 int
 rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
     rc_selfaffine_fit *fit, rc_err *err)

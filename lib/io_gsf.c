@@ -53,6 +53,7 @@ put(FILE *fp, size_t *len, const char *key, const char *val, rc_err *err)
 	return put_prefixed(fp, len, "", key, val, err);
 }
 
+/* Long: the GSF fields in the order the format defines them. */
 int
 rc__gsf_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
@@ -140,19 +141,6 @@ struct field {
 	char *key, *val;
 };
 
-static void
-trim(char **s)
-{
-	char *e;
-
-	while (**s == ' ' || **s == '\t')
-		(*s)++;
-	e = *s + strlen(*s);
-	while (e > *s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'))
-		e--;
-	*e = '\0';
-}
-
 static const char *
 lookup(const struct field *f, size_t n, const char *key)
 {
@@ -177,17 +165,8 @@ standard(const char *key)
 	return 0;
 }
 
-static int
-valid_key(const char *key)
-{
-	for (const char *p = key; *p; p++)
-		if (!(*p == '_' || *p == '-' || *p == '.' ||
-		    (*p >= 'a' && *p <= 'z') || (*p >= 'A' && *p <= 'Z') ||
-		    (*p >= '0' && *p <= '9')))
-			return 0;
-	return *key != '\0';
-}
-
+/* Long: the GSF fields in the order the format defines them, each checked
+ * where read; the unit rules of our own files need them all at once. */
 rc_grid *
 rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {
@@ -239,24 +218,18 @@ rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 	if ((f = rc_calloc(n / 2 + 1, sizeof(*f), err)) == NULL)
 		goto out;
 	for (line = head; line != NULL; line = next, lineno++) {
-		char *eq, *key, *val;
+		char *key, *val;
 
 		if ((next = strchr(line, '\n')) != NULL)
 			*next++ = '\0';
-		key = line;
-		trim(&key);
+		key = rc__header_trim(line);
 		if (*key == '\0')
 			continue;
-		if ((eq = strchr(line, '=')) == NULL) {
+		if (rc__header_split(key, &key, &val) != 0) {
 			rc_seterr(err, "header line %zu is not 'Name = Value': '%s'",
 			    lineno + 1, rc__io_quote(q, sizeof(q), key, strlen(key)));
 			goto out;
 		}
-		*eq = '\0';
-		key = line;
-		val = eq + 1;
-		trim(&key);
-		trim(&val);
 		f[nf].key = key;
 		f[nf++].val = val;
 	}
@@ -348,7 +321,7 @@ rc__gsf_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 			r = rc_grid_history_add(g, f[i].val, err);
 		else if (strncmp(key, "surf.", 5) == 0 || standard(key))
 			continue;
-		else if (valid_key(key))
+		else if (rc__header_key_valid(key))
 			/* Foreign fields (XOffset, Title, ...) are kept as metadata. */
 			r = rc_grid_meta_set(g, key, f[i].val, err);
 		else

@@ -60,6 +60,14 @@ rc_grid *rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx,
 rc_grid *rc__io_grid_alloc(size_t nx, size_t ny, double lx, double ly,
     rc_err *err);
 
+/* A header line "key = value" of .surf and .gsf split in place, the
+ * blanks around key and value (and a trailing CR) dropped; -1 without
+ * '='.  A key is valid when it is one or more of [A-Za-z0-9_.-] (the
+ * names grid metadata can hold). */
+int rc__header_split(char *line, char **key, char **val);
+/* s without the blanks around it (and a trailing CR), in place. */
+char *rc__header_trim(char *s);
+int rc__header_key_valid(const char *key);
 /* Parsers of header values; 0 on success. */
 int rc__parse_size(const char *s, size_t *v);
 int rc__parse_double(const char *s, double *v);

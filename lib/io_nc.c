@@ -233,6 +233,8 @@ classic_header_ok(const unsigned char *buf, size_t len)
 	return 1;
 }
 
+/* Long: the netCDF variables and attributes in the order the library
+ * hands them out, each checked where read. */
 int
 rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
@@ -336,6 +338,8 @@ out:
 	return r;
 }
 
+/* Long: the netCDF definitions in the order the library needs them
+ * (define mode, then data). */
 int
 rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 {

@@ -145,6 +145,8 @@ shape(struct parser *p, size_t dim[3])
 	}
 }
 
+/* Long: the .npy header dictionary (magic, version, descr, order, shape)
+ * in file order, each checked where read. */
 rc_grid *
 rc__npy_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {

@@ -190,6 +190,8 @@ word(rc_in *in, char *w, size_t cap, rc_err *err)
 	return n > 0;
 }
 
+/* Long: one pass over the ASCII SDF in file order; each check sits where
+ * its input is read. */
 static rc_grid *
 read_ascii(rc_in *in, rc_err *err)
 {

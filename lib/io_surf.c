@@ -125,41 +125,6 @@ out:
 	return r;
 }
 
-static int
-valid_key_char(int c)
-{
-	return c == '_' || c == '-' || c == '.' || (c >= 'a' && c <= 'z') ||
-	    (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9');
-}
-
-/* Split "key = value" in place; blanks around both are not significant. */
-static int
-split(char *line, char **key, char **val)
-{
-	char *eq = strchr(line, '='), *e;
-
-	if (eq == NULL)
-		return -1;
-	*eq = '\0';
-	for (*key = line; **key == ' ' || **key == '\t'; (*key)++)
-		;
-	for (e = eq; e > *key && (e[-1] == ' ' || e[-1] == '\t'); e--)
-		;
-	*e = '\0';
-	if (**key == '\0')
-		return -1;
-	for (e = *key; *e; e++)
-		if (!valid_key_char((unsigned char)*e))
-			return -1;
-	for (*val = eq + 1; **val == ' ' || **val == '\t'; (*val)++)
-		;
-	for (e = *val + strlen(*val); e > *val &&
-	    (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r'); e--)
-		;
-	*e = '\0';
-	return 0;
-}
-
 enum { K_NX, K_NY, K_LX, K_LY, K_UNIT, K_KIND, K_ENC, K_OFFSET, K_ZUNIT,
 	K_PERIODIC, K_FILLED, K_N };
 static const char *keys[K_N] = {
@@ -176,22 +141,139 @@ optional(int k)
 	    k == K_FILLED;
 }
 
-/* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
- * zeros carrying the header's fields, the row count into *header_ny. */
-static rc_grid *
-read_surf(rc_in *in, size_t *header_ny, rc_err *err)
+/* Bytes of a grid's unit and z_unit, NUL included. */
+#define UNIT_CAP	sizeof(((rc_grid *)NULL)->unit)
+
+/* The header's fields as read: the known keys' values (vals), history
+ * lines, metadata keys and values; all malloc'ed. */
+struct header {
+	char *vals[K_N];
+	char **hist, **mkey, **mval;
+	size_t nhist, nmeta;
+};
+
+static void
+header_free(struct header *hd)
 {
-	char *line = NULL, *vals[K_N] = { 0 }, *key, *val, q[64];
-	char **hist = NULL, **mkey = NULL, **mval = NULL;
-	size_t len, nhist = 0, nmeta = 0, nx = 0, ny = 0, offset = 0, lineno = 0;
-	double lx = 0, ly = 0;
-	rc_layout layout = { 8, 0, 0 };
-	rc_grid *g = NULL;
-	int r, kind = 0, done = 0;
+	for (int r = 0; r < K_N; r++)
+		free(hd->vals[r]);
+	for (size_t i = 0; i < hd->nhist; i++)
+		free(hd->hist[i]);
+	for (size_t i = 0; i < hd->nmeta; i++) {
+		free(hd->mkey[i]);
+		free(hd->mval[i]);
+	}
+	free(hd->hist);
+	free(hd->mkey);
+	free(hd->mval);
+}
+
+/* Store one "key = value" line of the header (line lineno). */
+static int
+header_field(struct header *hd, const char *key, const char *val,
+    size_t lineno, rc_err *err)
+{
+	char q[64];
+	int r;
+
+	if (strcmp(key, "history") == 0) {
+		char **h = realloc(hd->hist, (hd->nhist + 1) * sizeof(*h));
+
+		if (h == NULL)
+			return rc_seterr(err, "out of memory");
+		hd->hist = h;
+		if ((h[hd->nhist] = strdup(val)) == NULL)
+			return rc_seterr(err, "out of memory");
+		hd->nhist++;
+		return 0;
+	}
+	if (strncmp(key, "meta.", 5) == 0) {
+		char **mk, **mv;
+
+		if (key[5] == '\0')
+			return rc_seterr(err, "header line %zu: empty metadata key",
+			    lineno);
+		for (size_t i = 0; i < hd->nmeta; i++)
+			if (strcmp(hd->mkey[i], key + 5) == 0)
+				return rc_seterr(err, "header line %zu: duplicate key "
+				    "'%s'", lineno, key);
+		mk = realloc(hd->mkey, (hd->nmeta + 1) * sizeof(*mk));
+		if (mk != NULL)
+			hd->mkey = mk;
+		mv = realloc(hd->mval, (hd->nmeta + 1) * sizeof(*mv));
+		if (mv != NULL)
+			hd->mval = mv;
+		if (mk == NULL || mv == NULL)
+			return rc_seterr(err, "out of memory");
+		hd->mkey[hd->nmeta] = strdup(key + 5);
+		hd->mval[hd->nmeta] = strdup(val);
+		hd->nmeta++;
+		if (hd->mkey[hd->nmeta - 1] == NULL || hd->mval[hd->nmeta - 1] == NULL)
+			return rc_seterr(err, "out of memory");
+		return 0;
+	}
+	for (r = 0; r < K_N; r++)
+		if (strcmp(key, keys[r]) == 0)
+			break;
+	if (r == K_N)
+		return rc_seterr(err, "header line %zu: unknown key '%s' "
+		    "(metadata keys start with 'meta.')", lineno,
+		    rc__io_quote(q, sizeof(q), key, strlen(key)));
+	if (hd->vals[r] != NULL)
+		return rc_seterr(err, "header line %zu: duplicate key '%s'", lineno,
+		    key);
+	if ((hd->vals[r] = strdup(val)) == NULL)
+		return rc_seterr(err, "out of memory");
+	return 0;
+}
+
+/* One header line (line lineno, len bytes, in line) checked; 1 at the
+ * end line, 0 after a field or a comment, -1 on error. */
+static int
+header_line(struct header *hd, char *line, size_t len, size_t lineno,
+    rc_err *err)
+{
+	char *key, *val, q[64];
+
+	if (strlen(line) != len)
+		return rc_seterr(err, "header line %zu contains a NUL byte", lineno);
+	if (lineno == 1) {
+		if (strcmp(line, MAGIC) == 0)
+			return 0;
+		if (strncmp(line, "#surf ", 6) == 0)
+			return rc_seterr(err, "format version '%s': this reader "
+			    "knows '" MAGIC "'", rc__io_quote(q, sizeof(q), line, len));
+		return rc_seterr(err, "bad magic line '%s': expected '" MAGIC "'",
+		    rc__io_quote(q, sizeof(q), line, len));
+	}
+	if (line[0] == '#')
+		return 0;
+	for (size_t i = 0; i < len; i++)
+		if ((unsigned char)line[i] < 0x20 && line[i] != '\t' &&
+		    !(line[i] == '\r' && i == len - 1))
+			return rc_seterr(err, "header line %zu contains the control "
+			    "character \\x%02x", lineno, (unsigned char)line[i]);
+	if (strncmp(line, END, strlen(END)) == 0 &&
+	    strspn(line + strlen(END), " \t\r") == len - strlen(END))
+		return 1;
+	if (rc__header_split(line, &key, &val) != 0 ||
+	    !rc__header_key_valid(key))
+		return rc_seterr(err, "header line %zu is not 'key = value': '%s'",
+		    lineno, rc__io_quote(q, sizeof(q), line, len));
+	return header_field(hd, key, val, lineno, err);
+}
+
+/* The header up to and including its end line into hd. */
+static int
+header_read(rc_in *in, struct header *hd, rc_err *err)
+{
+	char *line;
+	size_t len, lineno = 0;
+	int r = 0;
 
 	if ((line = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
-		return NULL;
-	while (!done) {
+		return -1;
+	while (r == 0) {
 		/* The header, newlines included, fits in RC_HEADER_MAX bytes. */
 		size_t cap = RC_HEADER_MAX - (size_t)in->consumed;
 
@@ -200,163 +282,82 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 		if (r == -1) {
 			rc_seterr(err, "header longer than %zu bytes (no '" END "' line)",
 			    RC_HEADER_MAX);
-			goto fail;
+			break;
 		}
 		if (r == 0 || r == 2) {
 			if (rc__in_check(in, err) == 0)
 				rc_seterr(err, "truncated header: input ends at line %zu "
 				    "before the '" END "' line", lineno);
-			goto fail;
+			r = -1;
+			break;
 		}
-		if (strlen(line) != len) {
-			rc_seterr(err, "header line %zu contains a NUL byte", lineno);
-			goto fail;
-		}
-		if (lineno == 1) {
-			if (strcmp(line, MAGIC) != 0) {
-				if (strncmp(line, "#surf ", 6) == 0)
-					rc_seterr(err, "format version '%s': this reader "
-					    "knows '" MAGIC "'", rc__io_quote(q, sizeof(q), line, len));
-				else
-					rc_seterr(err, "bad magic line '%s': expected '" MAGIC "'",
-					    rc__io_quote(q, sizeof(q), line, len));
-				goto fail;
-			}
-			continue;
-		}
-		if (line[0] == '#')
-			continue;
-		for (size_t i = 0; i < len; i++)
-			if ((unsigned char)line[i] < 0x20 && line[i] != '\t' &&
-			    !(line[i] == '\r' && i == len - 1)) {
-				rc_seterr(err, "header line %zu contains the control "
-				    "character \\x%02x", lineno, (unsigned char)line[i]);
-				goto fail;
-			}
-		if (strncmp(line, END, strlen(END)) == 0 &&
-		    strspn(line + strlen(END), " \t\r") == len - strlen(END)) {
-			done = 1;
-			continue;
-		}
-		if (split(line, &key, &val) != 0) {
-			rc_seterr(err, "header line %zu is not 'key = value': '%s'",
-			    lineno, rc__io_quote(q, sizeof(q), line, len));
-			goto fail;
-		}
-		if (strcmp(key, "history") == 0) {
-			char **h = realloc(hist, (nhist + 1) * sizeof(*h));
-
-			if (h == NULL || (h[nhist] = strdup(val)) == NULL) {
-				if (h != NULL)
-					hist = h;
-				rc_seterr(err, "out of memory");
-				goto fail;
-			}
-			hist = h;
-			nhist++;
-			continue;
-		}
-		if (strncmp(key, "meta.", 5) == 0) {
-			char **mk, **mv;
-
-			if (key[5] == '\0') {
-				rc_seterr(err, "header line %zu: empty metadata key", lineno);
-				goto fail;
-			}
-			for (size_t i = 0; i < nmeta; i++)
-				if (strcmp(mkey[i], key + 5) == 0) {
-					rc_seterr(err, "header line %zu: duplicate key '%s'",
-					    lineno, key);
-					goto fail;
-				}
-			mk = realloc(mkey, (nmeta + 1) * sizeof(*mk));
-			if (mk != NULL)
-				mkey = mk;
-			mv = realloc(mval, (nmeta + 1) * sizeof(*mv));
-			if (mv != NULL)
-				mval = mv;
-			if (mk == NULL || mv == NULL) {
-				rc_seterr(err, "out of memory");
-				goto fail;
-			}
-			mkey[nmeta] = strdup(key + 5);
-			mval[nmeta] = strdup(val);
-			nmeta++;
-			if (mkey[nmeta - 1] == NULL || mval[nmeta - 1] == NULL) {
-				rc_seterr(err, "out of memory");
-				goto fail;
-			}
-			continue;
-		}
-		for (r = 0; r < K_N; r++)
-			if (strcmp(key, keys[r]) == 0)
-				break;
-		if (r == K_N) {
-			rc_seterr(err, "header line %zu: unknown key '%s' "
-			    "(metadata keys start with 'meta.')", lineno,
-			    rc__io_quote(q, sizeof(q), key, strlen(key)));
-			goto fail;
-		}
-		if (vals[r] != NULL) {
-			rc_seterr(err, "header line %zu: duplicate key '%s'", lineno, key);
-			goto fail;
-		}
-		if ((vals[r] = strdup(val)) == NULL) {
-			rc_seterr(err, "out of memory");
-			goto fail;
-		}
+		r = header_line(hd, line, len, lineno, err);
 	}
-	for (r = 0; r < K_N; r++)
-		if (vals[r] == NULL && !optional(r)) {
-			rc_seterr(err, "header lacks the required key '%s'", keys[r]);
-			goto fail;
-		}
-	if (rc__parse_size(vals[K_NX], &nx) != 0 || rc__parse_size(vals[K_NY], &ny) != 0) {
-		rc_seterr(err, "nx = '%s', ny = '%s': sizes must be positive integers",
+	free(line);
+	return r < 0 ? -1 : 0;
+}
+
+/* The known keys' values checked: *nx, *ny, *lx, *ly, *kind. */
+static int
+header_check(const struct header *hd, const rc_in *in, size_t *nx, size_t *ny,
+    double *lx, double *ly, int *kind, rc_err *err)
+{
+	char *const *vals = hd->vals;
+	char q[64];
+	size_t offset;
+
+	for (int r = 0; r < K_N; r++)
+		if (vals[r] == NULL && !optional(r))
+			return rc_seterr(err, "header lacks the required key '%s'",
+			    keys[r]);
+	if (rc__parse_size(vals[K_NX], nx) != 0 || rc__parse_size(vals[K_NY], ny) != 0)
+		return rc_seterr(err, "nx = '%s', ny = '%s': sizes must be positive integers",
 		    rc__io_quote(q, 32, vals[K_NX], strlen(vals[K_NX])),
 		    rc__io_quote(q + 32, 32, vals[K_NY], strlen(vals[K_NY])));
-		goto fail;
-	}
-	if (rc__parse_double(vals[K_LX], &lx) != 0 || rc__parse_double(vals[K_LY], &ly) != 0) {
-		rc_seterr(err, "lx = '%s', ly = '%s': lengths must be numbers",
+	if (rc__parse_double(vals[K_LX], lx) != 0 || rc__parse_double(vals[K_LY], ly) != 0)
+		return rc_seterr(err, "lx = '%s', ly = '%s': lengths must be numbers",
 		    rc__io_quote(q, 32, vals[K_LX], strlen(vals[K_LX])),
 		    rc__io_quote(q + 32, 32, vals[K_LY], strlen(vals[K_LY])));
-		goto fail;
-	}
-	if ((kind = rc_kind_parse(vals[K_KIND])) < 0) {
-		rc_seterr(err, "unknown kind '%s'", rc__io_quote(q, sizeof(q),
+	if ((*kind = rc_kind_parse(vals[K_KIND])) < 0)
+		return rc_seterr(err, "unknown kind '%s'", rc__io_quote(q, sizeof(q),
 		    vals[K_KIND], strlen(vals[K_KIND])));
-		goto fail;
-	}
-	if (strcmp(vals[K_ENC], "float64-le") != 0) {
-		rc_seterr(err, "encoding '%s' not supported (only float64-le)",
+	if (strcmp(vals[K_ENC], "float64-le") != 0)
+		return rc_seterr(err, "encoding '%s' not supported (only float64-le)",
 		    rc__io_quote(q, sizeof(q), vals[K_ENC], strlen(vals[K_ENC])));
-		goto fail;
-	}
-	if (vals[K_UNIT] != NULL && strlen(vals[K_UNIT]) >= sizeof(g->unit)) {
-		rc_seterr(err, "unit '%s' longer than %zu characters", rc__io_quote(q,
-		    sizeof(q), vals[K_UNIT], strlen(vals[K_UNIT])), sizeof(g->unit) - 1);
-		goto fail;
-	}
-	if (vals[K_ZUNIT] != NULL && strlen(vals[K_ZUNIT]) >= sizeof(g->z_unit)) {
-		rc_seterr(err, "z_unit '%s' longer than %zu characters", rc__io_quote(q,
-		    sizeof(q), vals[K_ZUNIT], strlen(vals[K_ZUNIT])), sizeof(g->z_unit) - 1);
-		goto fail;
-	}
+	if (vals[K_UNIT] != NULL && strlen(vals[K_UNIT]) >= UNIT_CAP)
+		return rc_seterr(err, "unit '%s' longer than %zu characters", rc__io_quote(q,
+		    sizeof(q), vals[K_UNIT], strlen(vals[K_UNIT])), UNIT_CAP - 1);
+	if (vals[K_ZUNIT] != NULL && strlen(vals[K_ZUNIT]) >= UNIT_CAP)
+		return rc_seterr(err, "z_unit '%s' longer than %zu characters", rc__io_quote(q,
+		    sizeof(q), vals[K_ZUNIT], strlen(vals[K_ZUNIT])), UNIT_CAP - 1);
 	if (vals[K_PERIODIC] != NULL && strcmp(vals[K_PERIODIC], "0") != 0 &&
-	    strcmp(vals[K_PERIODIC], "1") != 0) {
-		rc_seterr(err, "periodic = '%s': want 0 or 1", rc__io_quote(q,
+	    strcmp(vals[K_PERIODIC], "1") != 0)
+		return rc_seterr(err, "periodic = '%s': want 0 or 1", rc__io_quote(q,
 		    sizeof(q), vals[K_PERIODIC], strlen(vals[K_PERIODIC])));
-		goto fail;
-	}
 	if (vals[K_OFFSET] != NULL && (rc__parse_size(vals[K_OFFSET], &offset) != 0 ||
-	    offset != in->consumed)) {
-		rc_seterr(err, "data_offset = %s, but the header ends at byte %llu",
+	    offset != in->consumed))
+		return rc_seterr(err, "data_offset = %s, but the header ends at byte %llu",
 		    rc__io_quote(q, sizeof(q), vals[K_OFFSET], strlen(vals[K_OFFSET])),
 		    (unsigned long long)in->consumed);
-		goto fail;
-	}
-	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
+	return rc_grid_check_shape(*nx, *ny, *lx, *ly, err);
+}
+
+/* The whole grid, or (header_ny not NULL) the header only: a grid of nx x 1
+ * zeros carrying the header's fields, the row count into *header_ny. */
+static rc_grid *
+read_surf(rc_in *in, size_t *header_ny, rc_err *err)
+{
+	struct header hd;
+	char *const *vals = hd.vals;
+	size_t nx = 0, ny = 0;
+	double lx = 0, ly = 0;
+	rc_layout layout = { 8, 0, 0 };
+	rc_grid *g = NULL;
+	int kind = 0;
+
+	memset(&hd, 0, sizeof(hd));
+	if (header_read(in, &hd, err) != 0 ||
+	    header_check(&hd, in, &nx, &ny, &lx, &ly, &kind, err) != 0)
 		goto fail;
 	if (header_ny != NULL) {
 		*header_ny = ny;
@@ -372,30 +373,18 @@ read_surf(rc_in *in, size_t *header_ny, rc_err *err)
 	if (vals[K_ZUNIT] != NULL)
 		strcpy(g->z_unit, vals[K_ZUNIT]);
 	g->periodic = vals[K_PERIODIC] == NULL || vals[K_PERIODIC][0] == '1';
-	for (size_t i = 0; i < nmeta; i++)
-		if (rc_grid_meta_set(g, mkey[i], mval[i], err) != 0)
+	for (size_t i = 0; i < hd.nmeta; i++)
+		if (rc_grid_meta_set(g, hd.mkey[i], hd.mval[i], err) != 0)
 			goto fail;
-	for (size_t i = 0; i < nhist; i++)
-		if (rc_grid_history_add(g, hist[i], err) != 0)
+	for (size_t i = 0; i < hd.nhist; i++)
+		if (rc_grid_history_add(g, hd.hist[i], err) != 0)
 			goto fail;
-	goto out;
+	header_free(&hd);
+	return g;
 fail:
 	rc_grid_free(g);
-	g = NULL;
-out:
-	for (r = 0; r < K_N; r++)
-		free(vals[r]);
-	for (size_t i = 0; i < nhist; i++)
-		free(hist[i]);
-	for (size_t i = 0; i < nmeta; i++) {
-		free(mkey[i]);
-		free(mval[i]);
-	}
-	free(hist);
-	free(mkey);
-	free(mval);
-	free(line);
-	return g;
+	header_free(&hd);
+	return NULL;
 }
 
 int

@@ -349,6 +349,8 @@ columns(const double *v, size_t ncol, size_t n, rc_err *err)
 	return g;
 }
 
+/* Long: one pass over the text in file order (header comments, separator,
+ * rows, columns); each check sits where its input is read. */
 rc_grid *
 rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 {

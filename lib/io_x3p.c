@@ -285,6 +285,8 @@ host_le(void)
 }
 
 /* The values, from the binary file or the DataList, into g. */
+/* Long: the two ways x3p holds values (binary file, DataList) with their
+ * checks. */
 static int
 read_values(zip_t *za, const xmlNode *r3, const struct desc *d, rc_grid *g,
     rc_err *err)
@@ -605,6 +607,7 @@ copy_out(zip_source_t *src, FILE *fp, rc_err *err)
 	return 0;
 }
 
+/* Long: the x3p XML in document order, as the format defines it. */
 int
 rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
 {

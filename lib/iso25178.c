@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "fft.h"
+#include "gradient.h"
 
 static int
 ok(const rc_grid *g, size_t k)
@@ -120,7 +121,7 @@ gradients(const rc_grid *g, rc_iso *iso)
 				ip = j * nx + (i + 1) % nx;
 				if (!ok(g, ip))
 					continue;
-				gx = (g->z[ip] - g->z[k]) / dx;
+				gx = rc_deriv_forward(g->z[k], g->z[ip], 0, dx);
 			}
 			if (ny > 1) {
 				if (j + 1 == ny && !g->periodic)
@@ -128,7 +129,7 @@ gradients(const rc_grid *g, rc_iso *iso)
 				jp = ((j + 1) % ny) * nx + i;
 				if (!ok(g, jp))
 					continue;
-				gy = (g->z[jp] - g->z[k]) / dy;
+				gy = rc_deriv_forward(g->z[k], g->z[jp], 0, dy);
 			}
 			s2 += gx * gx + gy * gy;
 			sr += sqrt(1 + gx * gx + gy * gy) - 1;

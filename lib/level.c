@@ -91,6 +91,8 @@ all_finite(const gsl_vector *c)
  * a block, not six values per point. */
 #define BLOCK 4096
 
+/* Long: the design matrix is streamed to GSL in blocks: its assembly and
+ * the solve share the workspace. */
 int
 rc_detrend(rc_grid *g, enum rc_detrend kind, double *coef, rc_err *err)
 {
@@ -268,6 +270,8 @@ relax(rc_grid *g, size_t k, double wx, double wy, double omega)
 	return s;
 }
 
+/* Long: the relaxation's set-up, sweeps and convergence test share the
+ * fill mask and the neighbour weights. */
 int
 rc_fill_harmonic(rc_grid *g, unsigned char **filled, size_t *nfilled,
     rc_err *err)

@@ -98,13 +98,8 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 		return rc_seterr(err, "the grid has missing points: a spectrum "
 		    "needs every point (fill them with surfwarp --fill)");
 	window = rc_window_resolve(g, window);
-	if (fft == NULL) {
-		if (rc_fft_init(own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	memcpy(fft->real, g->z, n * sizeof(double));
 	if (demean || window != RC_WINDOW_NONE) {
 		double mean;
@@ -232,6 +227,8 @@ rc_psd_radial(const rc_grid *g, rc_fft *fft, double bins_per_decade,
 	    bins, nbins, err);
 }
 
+/* Long: window, transform and radial binning share the spectrum buffer
+ * and the bin counts. */
 int
 rc_psd_radial_window(const rc_grid *g, rc_fft *fft, double bins_per_decade,
     enum rc_window window, rc_psd_bin **bins, size_t *nbins, rc_err *err)
@@ -461,33 +458,101 @@ out:
 	return rc;
 }
 
+/* Radial bins of width dr over [0, rmax] of the ACF: per bin the sums of
+ * r w, v w and w over its displacements (w a pair count; 1 each on a
+ * periodic grid) and their number. */
+struct radial {
+	size_t nrad;
+	double dr, rmax;
+	double *rsum, *vsum, *wsum;
+	size_t *cnt;
+};
+
+static void
+radial_free(struct radial *rb)
+{
+	free(rb->rsum);
+	free(rb->vsum);
+	free(rb->wsum);
+	free(rb->cnt);
+}
+
+static int
+radial_init(struct radial *rb, double dr, double rmax, rc_err *err)
+{
+	memset(rb, 0, sizeof(*rb));
+	rb->dr = dr;
+	rb->rmax = rmax;
+	rb->nrad = (size_t)floor(rmax / dr + 0.5) + 1;
+	if ((rb->vsum = rc_calloc(rb->nrad, sizeof(double), err)) == NULL ||
+	    (rb->wsum = rc_calloc(rb->nrad, sizeof(double), err)) == NULL ||
+	    (rb->rsum = rc_calloc(rb->nrad, sizeof(double), err)) == NULL ||
+	    (rb->cnt = rc_calloc(rb->nrad, sizeof(size_t), err)) == NULL) {
+		radial_free(rb);
+		return -1;
+	}
+	return 0;
+}
+
+/* A displacement of length r (none beyond rmax), value v, weight w. */
+static void
+radial_add(struct radial *rb, double r, double v, double w)
+{
+	size_t b;
+
+	if (r > rb->rmax * (1 + 1e-12))
+		return;
+	b = (size_t)floor(r / rb->dr + 0.5);
+	if (b >= rb->nrad)
+		b = rb->nrad - 1;
+	rb->rsum[b] += r * w;
+	rb->vsum[b] += v * w;
+	rb->wsum[b] += w;
+	rb->cnt[b]++;
+}
+
+/* The non-empty bins as points pts[*k ...]: weighted means, values
+ * times f. */
+static void
+radial_points(const struct radial *rb, double f, rc_acf_point *pts, size_t *k)
+{
+	for (size_t b = 0; b < rb->nrad; b++) {
+		rc_acf_point *p;
+
+		if (rb->cnt[b] == 0)
+			continue;
+		p = &pts[(*k)++];
+		p->dir = RC_ACF_RADIAL;
+		p->r = rb->rsum[b] / rb->wsum[b];
+		p->g = f * rb->vsum[b] / rb->wsum[b];
+		p->n = rb->cnt[b];
+	}
+}
+
 static int
 acf_nonperiodic(const rc_grid *g, int half, rc_acf_point **pts, size_t *npts,
     rc_err *err)
 {
-	size_t nx = g->nx, ny = g->ny, px = 1, py = 1, nrad, cap, k = 0;
+	size_t nx = g->nx, ny = g->ny, px = 1, py = 1, cap, k = 0;
 	size_t npad = (nx > 1 ? 2 * nx : 1) * (ny > 1 ? 2 * ny : 1);
 	double dx = g->lx / (double)nx, dy = g->ly / (double)ny;
 	double dr = ny == 1 ? dx : nx == 1 ? dy : fmax(dx, dy);
 	double rmax = ny == 1 ? 0.5 * g->lx : nx == 1 ? 0.5 * g->ly :
 	    0.5 * fmin(g->lx, g->ly), f = half ? 0.5 : 1;
-	double *gv = NULL, *np = NULL, *ssum = NULL, *psum = NULL, *rsum = NULL;
-	size_t *cnt = NULL;
+	double *gv = NULL, *np = NULL;
+	struct radial rb;
 	int rc = -1;
 
 	*pts = NULL;
 	*npts = 0;
+	memset(&rb, 0, sizeof(rb));
 	if ((gv = rc_malloc(npad * sizeof(double), err)) == NULL ||
 	    (np = rc_malloc(npad * sizeof(double), err)) == NULL ||
-	    acf_padded(g, gv, np, &px, &py, err) != 0)
+	    acf_padded(g, gv, np, &px, &py, err) != 0 ||
+	    radial_init(&rb, dr, rmax, err) != 0)
 		goto out;
-	nrad = (size_t)floor(rmax / dr + 0.5) + 1;
-	cap = (nx / 2 + 1) + (ny / 2 + 1) + nrad;
-	if ((*pts = rc_calloc(cap, sizeof(**pts), err)) == NULL ||
-	    (ssum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
-	    (psum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
-	    (rsum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
-	    (cnt = rc_calloc(nrad, sizeof(size_t), err)) == NULL)
+	cap = (nx / 2 + 1) + (ny / 2 + 1) + rb.nrad;
+	if ((*pts = rc_calloc(cap, sizeof(**pts), err)) == NULL)
 		goto out;
 	for (size_t i = 0; i <= nx / 2; i++) {
 		rc_acf_point *p = &(*pts)[k++];
@@ -507,27 +572,12 @@ acf_nonperiodic(const rc_grid *g, int half, rc_acf_point **pts, size_t *npts,
 	for (size_t j = 0; j < py; j++)
 		for (size_t i = 0; i < px; i++) {
 			double r = hypot(min_image(i, px) * dx, min_image(j, py) * dy);
-			size_t b, m = j * px + i;
-			if (r > rmax * (1 + 1e-12) || !(np[m] >= 1))
-				continue;
-			b = (size_t)floor(r / dr + 0.5);
-			if (b >= nrad)
-				b = nrad - 1;
-			rsum[b] += r * np[m];
-			ssum[b] += gv[m] * np[m];
-			psum[b] += np[m];
-			cnt[b]++;
+			size_t m = j * px + i;
+
+			if (np[m] >= 1)
+				radial_add(&rb, r, gv[m], np[m]);
 		}
-	for (size_t b = 0; b < nrad; b++) {
-		rc_acf_point *p;
-		if (cnt[b] == 0)
-			continue;
-		p = &(*pts)[k++];
-		p->dir = RC_ACF_RADIAL;
-		p->r = rsum[b] / psum[b];
-		p->g = f * ssum[b] / psum[b];
-		p->n = cnt[b];
-	}
+	radial_points(&rb, f, *pts, &k);
 	*npts = k;
 	rc = 0;
 out:
@@ -537,10 +587,7 @@ out:
 	}
 	free(gv);
 	free(np);
-	free(ssum);
-	free(psum);
-	free(rsum);
-	free(cnt);
+	radial_free(&rb);
 	return rc;
 }
 
@@ -577,15 +624,15 @@ acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
     rc_err *err)
 {
 	rc_fft own, *f;
-	size_t nx = g->nx, ny = g->ny, n = nx * ny, nrad, cap, k = 0;
+	size_t nx = g->nx, ny = g->ny, n = nx * ny, cap, k = 0;
 	double dx = g->lx / (double)nx, dy = g->ly / (double)ny;
 	double dr = fmax(dx, dy), rmax = 0.5 * fmin(g->lx, g->ly), r0;
-	double *rsum = NULL, *gsum = NULL;
-	size_t *cnt = NULL;
+	struct radial rb;
 	int rc = -1;
 
 	*pts = NULL;
 	*npts = 0;
+	memset(&rb, 0, sizeof(rb));
 	if (forward(g, fft, &own, &f, 1, RC_WINDOW_NONE, NULL, err) != 0)
 		return -1;
 	/* Autocorrelation R(r) = (1/N) sum_r0 dh(r0) dh(r0 + r): the inverse
@@ -598,12 +645,10 @@ acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
 	rc_fft_backward(f);
 	const double *acr = f->real;
 	r0 = acr[0];
-	nrad = (size_t)floor(rmax / dr + 0.5) + 1;
-	cap = (nx / 2 + 1) + (ny / 2 + 1) + nrad;
-	if ((*pts = rc_calloc(cap, sizeof(**pts), err)) == NULL ||
-	    (rsum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
-	    (gsum = rc_calloc(nrad, sizeof(double), err)) == NULL ||
-	    (cnt = rc_calloc(nrad, sizeof(size_t), err)) == NULL)
+	if (radial_init(&rb, dr, rmax, err) != 0)
+		goto out;
+	cap = (nx / 2 + 1) + (ny / 2 + 1) + rb.nrad;
+	if ((*pts = rc_calloc(cap, sizeof(**pts), err)) == NULL)
 		goto out;
 	/* G(r) = 2 (R(0) - R(r)). */
 	for (size_t i = 0; i <= nx / 2; i++) {
@@ -623,26 +668,11 @@ acf_periodic(const rc_grid *g, rc_fft *fft, rc_acf_point **pts, size_t *npts,
 	for (size_t j = 0; j < ny; j++)
 		for (size_t i = 0; i < nx; i++) {
 			double r = hypot(min_image(i, nx) * dx, min_image(j, ny) * dy);
-			size_t b;
-			if (r > rmax * (1 + 1e-12))
-				continue;
-			b = (size_t)floor(r / dr + 0.5);
-			if (b >= nrad)
-				b = nrad - 1;
-			rsum[b] += r;
-			gsum[b] += 2 * (r0 - acr[j * nx + i]) / ((double)n * (double)n);
-			cnt[b]++;
+
+			radial_add(&rb, r, 2 * (r0 - acr[j * nx + i]) /
+			    ((double)n * (double)n), 1);
 		}
-	for (size_t b = 0; b < nrad; b++) {
-		rc_acf_point *p;
-		if (cnt[b] == 0)
-			continue;
-		p = &(*pts)[k++];
-		p->dir = RC_ACF_RADIAL;
-		p->r = rsum[b] / (double)cnt[b];
-		p->g = gsum[b] / (double)cnt[b];
-		p->n = cnt[b];
-	}
+	radial_points(&rb, 1, *pts, &k);
 	*npts = k;
 	rc = 0;
 out:
@@ -650,13 +680,13 @@ out:
 		free(*pts);
 		*pts = NULL;
 	}
-	free(rsum);
-	free(gsum);
-	free(cnt);
+	radial_free(&rb);
 	rc_fft_free(&own);
 	return rc;
 }
 
+/* Long: window, row transforms and averaging share the buffers of one
+ * axis. */
 int
 rc_psd1d(const rc_grid *g, enum rc_psd1d_dir dir, enum rc_window window,
     rc_psd1d_point **pts, size_t *npts, rc_err *err)

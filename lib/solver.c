@@ -42,14 +42,6 @@
 
 #include "clock.h"
 
-#ifdef RC_MPI
-#include "mpi/decomp.h"
-#define BLOCKED_INIT(s, o, err)	0	/* FFTW's MPI transforms only */
-#else
-#define BLOCKED_INIT(s, o, err)	rc_fft_conv_init(&(s)->el.fft, \
-	(o)->fft_effort, (o)->fft_block_points, err)
-#endif
-
 void
 rc_solver_defaults(rc_solver_opts *o)
 {
@@ -100,6 +92,8 @@ rc_method_parse(const char *name)
 	return -1;
 }
 
+/* Long: every option is checked here, together, before anything is
+ * allocated. */
 rc_solver *
 rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 {
@@ -118,12 +112,6 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "unknown boundary kind %d", (int)o->boundary);
 		return NULL;
 	}
-#ifdef RC_MPI
-	if (o->boundary == RC_BOUNDARY_FREE) {
-		rc_seterr(err, "free boundaries are not in the MPI build");
-		return NULL;
-	}
-#endif
 	if (!(o->hardness >= 0)) {
 		rc_seterr(err, "hardness must be positive (0 or inf: no cap)");
 		return NULL;
@@ -198,7 +186,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		return NULL;
 	}
 	if (!s->free_bc && (rc_elastic_set_kernel(&s->el, s->lx, s->ly,
-	    o->kernel, err) != 0 || BLOCKED_INIT(s, o, err) != 0)) {
+	    o->kernel, err) != 0 || rc_fft_conv_init(&s->el.fft,
+	    o->fft_effort, o->fft_block_points, err) != 0)) {
 		rc_elastic_free(&s->el);
 		free(s);
 		return NULL;
@@ -229,9 +218,6 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	for (size_t k = 0; k < n; k++)
 		if (s->height[k] > s->top)
 			s->top = s->height[k];
-#ifdef RC_MPI
-	rc_mpi_max(&s->top, 1);
-#endif
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
 	    rc__cg_alloc(s, err)) != 0 || (s->free_bc && s->scratch == NULL &&
 	    (s->scratch = fftw_alloc_real(n)) == NULL)) {
@@ -335,14 +321,15 @@ rc__sigma_to_load(rc_solver *s, double p)
 }
 
 double
+rc__points(const rc_solver *s)
+{
+	return s->el.dist != NULL ? (double)s->el.n : (double)s->n;
+}
+
+double
 rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 {
-#ifdef RC_MPI
-	/* the sums are global (solver_fire.c) */
-	double n = (double)s->el.n;
-#else
-	double n = (double)s->n;
-#endif
+	double n = rc__points(s);	/* the sums are global (solver_fire.c) */
 	double force = sqrt(sum_d2 / n) / p, load = fabs(sum_sigma / n - p) / p;
 
 	return force > load ? force : load;
@@ -388,12 +375,8 @@ rc_solver_mean_gap(const rc_solver *s)
 #pragma omp parallel for reduction(+:sum) schedule(static)
 	for (k = 0; k < s->n; k++)
 		sum += s->u[k] - s->height[k];
-#ifdef RC_MPI
-	rc_mpi_sum(&sum, 1);
-	return sum / (double)s->el.n;
-#else
-	return sum / (double)s->n;
-#endif
+	rc_elastic_sum(&s->el, &sum, 1);
+	return sum / rc__points(s);
 }
 
 double
@@ -407,13 +390,9 @@ rc_solver_approach(const rc_solver *s)
 #pragma omp parallel for reduction(+:sum) schedule(static)
 	for (k = 0; k < s->n; k++)
 		sum += s->u[k];
-#ifdef RC_MPI
-	rc_mpi_sum(&sum, 1);
-	return s->top - sum / (double)s->el.n;
-#else
-	return s->top - sum / (double)s->n +
+	rc_elastic_sum(&s->el, &sum, 1);
+	return s->top - sum / rc__points(s) +
 	    (isfinite(s->k_uniform) ? s->last_pressure / s->k_uniform : 0);
-#endif
 }
 
 int

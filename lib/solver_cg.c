@@ -50,6 +50,31 @@
 #define CHECK_EVERY	100
 
 int
+rc__cg_next(rc_solver *s, double p, double bound, long it,
+    double (*check)(rc_solver *, double), double *residual, int *status)
+{
+	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
+	    (s->opts.stop && *s->opts.stop)) {
+		*residual = check(s, p);
+		if (*residual <= s->opts.tol)
+			*status = 0;
+		return RC__CG_STOP;
+	}
+	/* The bound can stay far above the residual (seen on strongly
+	 * warped surfaces: residual below tol for thousands of
+	 * iterations); check the residual itself now and then. */
+	if (it > 0 && it % CHECK_EVERY == 0) {
+		*residual = check(s, p);
+		if (*residual <= s->opts.tol) {
+			*status = 0;
+			return RC__CG_STOP;
+		}
+		return RC__CG_STALE;
+	}
+	return RC__CG_GO;
+}
+
+int
 rc__cg_alloc(rc_solver *s, rc_err *err)
 {
 	s->u = fftw_alloc_real(s->n);
@@ -108,7 +133,7 @@ double
 rc__final_check_free(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, force, load;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
 	double *u = s->u;
 	const double *h = s->height, *sigma = s->sigma;
 
@@ -124,9 +149,18 @@ rc__final_check_free(rc_solver *s, double p)
 		sum_e += sigma[k] * u[k];
 		u[k] = up;
 	}
-	s->energy = 0.5 * sum_e / (double)n;
-	force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
-	load = fabs(sum_s / (double)n - p) / p;
+	return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
+}
+
+double
+rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
+    double sum_e)
+{
+	double n = (double)s->n, force, load;
+
+	s->energy = 0.5 * sum_e / n;
+	force = rc__stiffness_max(s) * sqrt(sum_d2 / n) / p;
+	load = fabs(sum_s / n - p) / p;
 	return force > load ? force : load;
 }
 
@@ -207,6 +241,8 @@ rc__cg_initial_pressure(rc_solver *s, double p)
 	rc__sigma_to_load(s, p);
 }
 
+/* Long: one Polonsky-Keer iteration: its passes share the sums and the
+ * conjugate direction. */
 int
 rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
@@ -220,7 +256,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	double g00 = 0;		/* G_00, computed when first needed */
 	double pn = p * (double)n, inv_n = 1.0 / (double)n;
 	long it, since_refresh = 0;
-	int stale = 1, conjugate = 0, status = 1;
+	int stale = 1, conjugate = 0, status = 1, next;
 
 	(void)err;
 	rc__cg_initial_pressure(s, p);
@@ -251,22 +287,11 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				pen += g * g;
 		}
 		bound = k_max * sqrt((gsum + pen) * inv_n) / p;
-		if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-		    (s->opts.stop && *s->opts.stop)) {
-			residual = final_check(s, p);
-			if (residual <= s->opts.tol)
-				status = 0;
+		next = rc__cg_next(s, p, bound, it, final_check, &residual,
+		    &status);
+		if (next == RC__CG_STOP)
 			break;
-		}
-		/* The bound can stay far above the residual (seen on strongly
-		 * warped surfaces: residual below tol for thousands of
-		 * iterations); check the residual itself now and then. */
-		if (it > 0 && it % CHECK_EVERY == 0) {
-			residual = final_check(s, p);
-			if (residual <= s->opts.tol) {
-				status = 0;
-				break;
-			}
+		if (next == RC__CG_STALE) {
 			stale = 1;	/* final_check left u' in disp */
 			continue;
 		}

@@ -36,7 +36,6 @@
 #include <string.h>
 
 #define PROGRESS_EVERY	50
-#define CHECK_EVERY	100
 #define TRUST	0.5
 
 /* The admissible u' of the top from v = u + c. */
@@ -92,6 +91,8 @@ plastic_level(const rc_solver *s, double *c)
  * scaled, those that reach H moved to H, until the mean is p.  disp holds
  * G sigma (or NULL); returns 1 if G sigma is now stale, 0 if the change
  * was a uniform scale (applied to disp too). */
+/* Long: the bisection on the level and the clamp at 0 and H share the
+ * pressure bounds. */
 static int
 restore_load(rc_solver *s, double p, double *disp)
 {
@@ -195,8 +196,6 @@ plastic_check(rc_solver *s, double p)
 	plastic_level(s, &c);
 	s->level = c;
 	if (s->free_bc) {
-		double force, load;
-
 		for (k = 0; k < n; k++) {
 			double v = u[k] + c, up = admissible(v, h[k], sigma[k], H);
 
@@ -206,10 +205,7 @@ plastic_check(rc_solver *s, double p)
 			sum_e += sigma[k] * u[k];
 			u[k] = up;
 		}
-		s->energy = 0.5 * sum_e / (double)n;
-		force = rc__stiffness_max(s) * sqrt(sum_d2 / (double)n) / p;
-		load = fabs(sum_s / (double)n - p) / p;
-		return force > load ? force : load;
+		return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
 	} else {
 		double *ku = s->el.fft.real;
 
@@ -238,6 +234,8 @@ active(double sigma, double g, double H)
 	    (sigma >= H && g > 0);
 }
 
+/* Long: one bounded-pressure CG iteration: its passes share the sums and
+ * the conjugate direction. */
 int
 rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err)
@@ -251,7 +249,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 	double g_old = 1, c = 0, residual = HUGE_VAL, bound;
 	double g00 = 0, inv_n = 1.0 / (double)n;
 	long it;
-	int stale = 1, conjugate = 0, status = 1;
+	int stale = 1, conjugate = 0, status = 1, next;
 
 	if (p > H)
 		return rc_seterr(err, "pressure %g exceeds the hardness %g: no "
@@ -281,19 +279,11 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 			}
 		}
 		bound = k_max * sqrt(viol * inv_n) / p;
-		if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-		    (s->opts.stop && *s->opts.stop)) {
-			residual = plastic_check(s, p);
-			if (residual <= s->opts.tol)
-				status = 0;
+		next = rc__cg_next(s, p, bound, it, plastic_check, &residual,
+		    &status);
+		if (next == RC__CG_STOP)
 			break;
-		}
-		if (it > 0 && it % CHECK_EVERY == 0) {
-			residual = plastic_check(s, p);
-			if (residual <= s->opts.tol) {
-				status = 0;
-				break;
-			}
+		if (next == RC__CG_STALE) {
 			stale = 1;
 			continue;
 		}

@@ -85,15 +85,10 @@
 #include <math.h>
 #include <string.h>
 
-/* The MPI build (make MPI=1) runs this file on each rank's rows: s->n is
- * the local point count, s->el.n the global one, and every sum over points
- * is completed by an MPI_Allreduce (lib/mpi/decomp.h). */
-#ifdef RC_MPI
-#include "mpi/decomp.h"
-#define POINTS(s)	((double)(s)->el.n)
-#else
-#define POINTS(s)	((double)(s)->n)
-#endif
+/* A distributed operator (elastic.h, make MPI=1) runs this file on each
+ * rank's rows: s->n is the local point count, rc__points the global one,
+ * and every sum over points is completed through rc_elastic_sum. */
+#define POINTS(s)	rc__points(s)
 
 #define DT_START	1.0
 #define DT_MAX		2.0
@@ -157,9 +152,7 @@ static double
 wall_result(rc_solver *s, double p, double *sums, size_t *n_contact,
     double *power)
 {
-#ifdef RC_MPI
-	rc_mpi_sum(sums, 4);
-#endif
+	rc_elastic_sum(&s->el, sums, 4);
 	*n_contact = (size_t)sums[2];
 	*power = sums[3];
 	return rc__residual(s, p, sums[0], sums[1]);
@@ -189,26 +182,9 @@ mass_weighted(rc_solver *s, double mass0)
 {
 	rc_elastic *e = &s->el;
 	double inv_n = 1.0 / (double)e->n;
-#ifdef RC_MPI
-	size_t m, nm = e->nxc * e->ny;
-	double inv_m0 = inv_n / mass0;
-	double *z = (double *)e->fft.spec;	/* as in elastic.c's scale_spec */
-	const double *k = e->stiffness;
-
-	rc_elastic_r2c(e, s->sigma, e->fft.spec);
-#pragma omp parallel for schedule(static)
-	for (m = 0; m < nm; m++) {
-		double f = k[m] > 0 ? inv_n / k[m] : inv_m0;
-
-		z[2 * m] *= f;
-		z[2 * m + 1] *= f;
-	}
-	rc_elastic_c2r(e, e->fft.spec, e->fft.real);
-#else
 	rc_fft_multiplier mu = { e->stiffness, inv_n, 1, inv_n / mass0 };
 
 	rc_elastic_convolve(e, s->sigma, e->fft.real, &mu);
-#endif
 	return e->fft.real;
 }
 
@@ -226,9 +202,7 @@ contact_pressure(rc_solver *s, double p)
 		sum += s->u[k] * s->sigma[k];
 		s->sigma[k] = s->contact[k] ? p + s->sigma[k] : 0;
 	}
-#ifdef RC_MPI
-	rc_mpi_sum(&sum, 1);
-#endif
+	rc_elastic_sum(&s->el, &sum, 1);
 	return 0.5 * sum / POINTS(s);
 }
 
@@ -293,13 +267,11 @@ mixing_range(const rc_solver *s, const double *a, int restart, size_t k0,
 /* The mixing coefficients from mixing_range's sums, completed over the
  * ranks. */
 static void
-fire_mixing(struct fire_step *st, double *sums)
+fire_mixing(const rc_solver *s, struct fire_step *st, double *sums)
 {
 	double aa, av, vv, dt = st->dt;
 
-#ifdef RC_MPI
-	rc_mpi_sum(sums, 3);
-#endif
+	rc_elastic_sum(&s->el, sums, 3);
 	aa = sums[0];
 	av = sums[1];
 	vv = sums[2];
@@ -355,9 +327,7 @@ fire_start(rc_solver *s)
 		for (k = 0; k < n; k++)
 			if (h[k] > top)
 				top = h[k];
-#ifdef RC_MPI
-		rc_mpi_max(&top, 1);
-#endif
+		rc_elastic_max(&s->el, &top, 1);
 		for (k = 0; k < n; k++)
 			u[k] = top;
 		s->have_u = 1;
@@ -395,7 +365,6 @@ mass0_of(const rc_solver *s, size_t n_contact)
 	    sqrt((double)(n_contact > 0 ? n_contact : 1) / POINTS(s));
 }
 
-#ifndef RC_MPI
 /* The iterations on a grid whose transforms take the blocked path
  * (fft.h): the passes of steps 2, 3 and 5 run on each block of rows
  * between its row transforms, while it is in cache, instead of as
@@ -450,7 +419,7 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 			rc_fft_rows_c2r(f, a, b);
 			mixing_range(s, a, st.restart, j0 * nx, j1 * nx, sums);
 		}
-		fire_mixing(&st, sums);
+		fire_mixing(s, &st, sums);
 		/* The update, then the r2c of the new u for the next K u. */
 #pragma omp parallel for schedule(static)
 		for (b = 0; b < nb; b++) {
@@ -463,7 +432,6 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 	}
 	return it;
 }
-#endif
 
 /* The iterations with whole-grid transforms and passes. */
 static long
@@ -485,7 +453,7 @@ fire_plain(rc_solver *s, double p, double *residual, int *status)
 		for (b = 0; b < nb; b++)
 			mixing_range(s, a, st.restart, b * CHUNK,
 			    b * CHUNK + CHUNK < n ? b * CHUNK + CHUNK : n, sums);
-		fire_mixing(&st, sums);
+		fire_mixing(s, &st, sums);
 #pragma omp parallel for schedule(static)
 		for (b = 0; b < nb; b++)
 			update_range(s, a, &st, b * CHUNK,
@@ -503,11 +471,9 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 
 	(void)err;
 	fire_start(s);
-#ifndef RC_MPI
-	if (rc_fft_conv_blocked(&s->el.fft))
+	if (rc_fft_conv_blocked(&s->el.fft))	/* never a distributed one */
 		it = fire_blocked(s, p, &residual, &status);
 	else
-#endif
 		it = fire_plain(s, p, &residual, &status);
 	s->energy = contact_pressure(s, p);
 	res->iterations = it;

@@ -37,6 +37,9 @@ struct rc_solver {
 	double p_adh, a_attr;
 };
 
+/* The number of points of the whole grid: s->n, or the global count of a
+ * distributed operator (elastic.h), whose s->n is this process's rows. */
+double rc__points(const rc_solver *s);
 /* Both methods' convergence measure (see solver.c) from the sum over all
  * points of (p + K u - sigma)^2 and the sum of sigma. */
 double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma);
@@ -60,6 +63,11 @@ int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
  * (solver_fire_free.c). */
 size_t rc__level(const rc_solver *s, double *c);
 double rc__final_check_free(rc_solver *s, double p);
+/* That measure, max(k_max rms(u' - u) / p, |<sigma> - p| / p), from the
+ * sums over all points of (u' - u)^2, sigma and sigma u; sets the
+ * elastic energy (1/2) <sigma u>.  Both CG variants. */
+double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
+    double sum_e);
 double rc__stiffness_max(const rc_solver *s);
 int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
@@ -69,6 +77,13 @@ int rc__cg_alloc(rc_solver *s, rc_err *err);
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
+/* The stopping rule of both CG variants (solver_cg.c), after iteration it
+ * has its gap bound: STOP (the final check ran: *residual, and *status 0
+ * if it met opts.tol), STALE (a periodic check of the residual itself
+ * ran and missed: the iterate must be recomputed) or GO. */
+enum { RC__CG_GO, RC__CG_STOP, RC__CG_STALE };
+int rc__cg_next(rc_solver *s, double p, double bound, long it,
+    double (*check)(rc_solver *, double), double *residual, int *status);
 /* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);

@@ -34,13 +34,8 @@ ordered_sum(const double *partial)
 static int
 transform(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, rc_err *err)
 {
-	if (fft == NULL) {
-		if (rc_fft_init(own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	memcpy(fft->real, g->z, rc_grid_size(g) * sizeof(double));
 	rc_fft_forward(fft);
 	*use = fft;
@@ -70,25 +65,8 @@ rc_spectral_derivs(const rc_grid *g, rc_fft *fft, double *hx, double *hy,
 	for (int d = 0; d < 3; d++) {
 		if (out[d] == NULL)
 			continue;
-		long ny = (long)g->ny;
-		#pragma omp parallel for schedule(static)
-		for (long jl = 0; jl < ny; jl++) {
-			size_t j = (size_t)jl;
-			double qy = rc_wavenumber(j, g->ny, g->ly);
-			double dqy = rc_deriv_wavenumber(j, g->ny, g->ly);
-			for (size_t i = 0; i < nxc; i++) {
-				double qx = rc_wavenumber(i, g->nx, g->lx);
-				double dqx = rc_deriv_wavenumber(i, g->nx, g->lx);
-				double complex c = spec0[j * nxc + i] / (double)n;
-				if (d == 0)
-					c *= I * dqx;
-				else if (d == 1)
-					c *= I * dqy;
-				else
-					c *= -(qx * qx + qy * qy);
-				f->spec[j * nxc + i] = c;
-			}
-		}
+		rc_deriv_spectral(f->spec, spec0, (enum rc_deriv)d, g->nx, g->ny,
+		    g->lx, g->ly, 0, g->ny);
 		rc_fft_backward(f);
 		memcpy(out[d], f->real, n * sizeof(double));
 	}
@@ -101,31 +79,14 @@ int
 rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
     rc_err *err)
 {
-	rc_fft *f;
-	double n = (double)rc_grid_size(g);
+	rc_fft own, *f;
 
 	if (fft == NULL)
 		return rc_seterr(err, "internal: rc_spectral_deriv needs a plan");
-	if (transform(g, fft, NULL, &f, err) != 0)
+	if (transform(g, fft, &own, &f, err) != 0)
 		return -1;
-	long ny = (long)g->ny;
-	#pragma omp parallel for schedule(static)
-	for (long jl = 0; jl < ny; jl++) {
-		size_t j = (size_t)jl;
-		double qy = rc_wavenumber(j, g->ny, g->ly);
-		double dqy = rc_deriv_wavenumber(j, g->ny, g->ly);
-		for (size_t i = 0; i < f->nxc; i++) {
-			double qx = rc_wavenumber(i, g->nx, g->lx);
-			double complex factor;
-			if (which == RC_DERIV_X)
-				factor = I * rc_deriv_wavenumber(i, g->nx, g->lx);
-			else if (which == RC_DERIV_Y)
-				factor = I * dqy;
-			else
-				factor = -(qx * qx + qy * qy);
-			f->spec[j * f->nxc + i] *= factor / n;
-		}
-	}
+	rc_deriv_spectral(f->spec, f->spec, which, g->nx, g->ny, g->lx, g->ly, 0,
+	    g->ny);
 	rc_fft_backward(f);
 	return 0;
 }

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* spectral.h - derivatives of a periodic grid through the FFT.
+/* spectral.h - derivatives of a periodic grid through the FFT (the
+ * spectral stencil of gradient.h).
  *
  * Exact for band-limited periodic data.  Odd derivatives zero the Nyquist
  * row/column (its derivative is not representable on the grid); the
@@ -13,6 +14,7 @@
 #define RC_SPECTRAL_H
 
 #include "fft.h"
+#include "gradient.h"
 #include "grid.h"
 
 /* Any of hx, hy (gradient) and lap (Laplacian) may be NULL; each non-NULL
@@ -21,14 +23,10 @@
 int rc_spectral_derivs(const rc_grid *g, rc_fft *fft, double *hx, double *hy,
     double *lap, rc_err *err);
 
-/* One derivative field at a time, left normalised in fft->real (which the
- * next use of the plan overwrites), using no memory beyond the plan's two
- * buffers: for callers that reduce each field before making the next. */
-enum rc_deriv {
-	RC_DERIV_X = 0,		/* dh/dx */
-	RC_DERIV_Y,		/* dh/dy */
-	RC_DERIV_LAPLACIAN	/* d2h/dx2 + d2h/dy2 */
-};
+/* One derivative field (enum rc_deriv, gradient.h) at a time, left
+ * normalised in fft->real (which the next use of the plan overwrites),
+ * using no memory beyond the plan's two buffers: for callers that reduce
+ * each field before making the next. */
 int rc_spectral_deriv(const rc_grid *g, rc_fft *fft, enum rc_deriv which,
     rc_err *err);
 

@@ -37,27 +37,12 @@ rc_deriv_method_name(enum rc_deriv_method m)
 	return m == RC_DERIV_FD ? "finite-difference" : "spectral";
 }
 
-enum field { F_X, F_Y, F_LAP, F_XX, F_COUNT };
-
-/* Spectral factor of field d at mode (i, j); odd derivatives use the
- * Nyquist-zeroed wave numbers. */
-static double complex
-spectral_factor(const rc_grid *g, enum field d, size_t i, size_t j)
-{
-	double qx = rc_wavenumber(i, g->nx, g->lx);
-	double qy = rc_wavenumber(j, g->ny, g->ly);
-
-	switch (d) {
-	case F_X:
-		return I * rc_deriv_wavenumber(i, g->nx, g->lx);
-	case F_Y:
-		return I * rc_deriv_wavenumber(j, g->ny, g->ly);
-	case F_LAP:
-		return -(qx * qx + qy * qy);
-	default:
-		return -qx * qx;
-	}
-}
+/* The fields of rc_deriv_fields, in enum rc_deriv's order (gradient.h). */
+#define F_X	RC_DERIV_X
+#define F_Y	RC_DERIV_Y
+#define F_LAP	RC_DERIV_LAPLACIAN
+#define F_XX	RC_DERIV_XX
+#define F_COUNT	4
 
 static int
 spectral_fields(const rc_grid *g, rc_fft *fft, double *out[F_COUNT],
@@ -68,14 +53,8 @@ spectral_fields(const rc_grid *g, rc_fft *fft, double *out[F_COUNT],
 	double complex *spec0;
 	int rc = -1;
 
-	memset(&own, 0, sizeof(own));
-	if (fft == NULL) {
-		if (rc_fft_init(&own, g->nx, g->ny, RC_FFT_ESTIMATE, err) != 0)
-			return -1;
-		fft = &own;
-	} else if (fft->nx != g->nx || fft->ny != g->ny)
-		return rc_seterr(err, "internal: FFT plan %zux%zu for a %zux%zu grid",
-		    fft->nx, fft->ny, g->nx, g->ny);
+	if ((fft = rc_fft_borrow(fft, &own, g->nx, g->ny, err)) == NULL)
+		return -1;
 	nspec = fft->nxc * g->ny;
 	/* The backward transform destroys its input: keep the spectrum. */
 	if ((spec0 = fftw_alloc_complex(nspec)) == NULL) {
@@ -89,14 +68,8 @@ spectral_fields(const rc_grid *g, rc_fft *fft, double *out[F_COUNT],
 	for (int d = 0; d < F_COUNT; d++) {
 		if (out[d] == NULL)
 			continue;
-		long ny = (long)g->ny;
-		#pragma omp parallel for schedule(static)
-		for (long jl = 0; jl < ny; jl++) {
-			size_t j = (size_t)jl;
-			for (size_t i = 0; i < fft->nxc; i++)
-				fft->spec[j * fft->nxc + i] = spec0[j * fft->nxc + i] *
-				    spectral_factor(g, (enum field)d, i, j) / (double)n;
-		}
+		rc_deriv_spectral(fft->spec, spec0, (enum rc_deriv)d, g->nx,
+		    g->ny, g->lx, g->ly, 0, g->ny);
 		rc_fft_backward(fft);
 		memcpy(out[d], fft->real, n * sizeof(double));
 	}
@@ -107,34 +80,29 @@ out:
 	return rc;
 }
 
+/* The central stencil (gradient.h) at every point. */
 static void
 fd_fields(const rc_grid *g, double *out[F_COUNT])
 {
 	size_t nx = g->nx, ny = g->ny;
 	double dx = g->lx / (double)nx, dy = g->ly / (double)ny;
-	const double *h = g->z;
 
 	#pragma omp parallel for
-	for (size_t j = 0; j < ny; j++) {
-		size_t jp = (j + 1) % ny, jm = (j + ny - 1) % ny;
+	for (size_t j = 0; j < ny; j++)
 		for (size_t i = 0; i < nx; i++) {
-			size_t ip = (i + 1) % nx, im = (i + nx - 1) % nx;
-			double c = h[j * nx + i];
-			double e = h[j * nx + ip], w = h[j * nx + im];
-			double nn = h[jp * nx + i], s = h[jm * nx + i];
-			double dxx = (e - 2 * c + w) / (dx * dx);
-			double dyy = (nn - 2 * c + s) / (dy * dy);
 			size_t k = j * nx + i;
+			double d[4];
+
+			rc_deriv_central(g->z, nx, ny, i, j, dx, dy, d);
 			if (out[F_X])
-				out[F_X][k] = (e - w) / (2 * dx);
+				out[F_X][k] = d[RC_D_X];
 			if (out[F_Y])
-				out[F_Y][k] = (nn - s) / (2 * dy);
+				out[F_Y][k] = d[RC_D_Y];
 			if (out[F_LAP])
-				out[F_LAP][k] = dxx + dyy;
+				out[F_LAP][k] = d[RC_D_XX] + d[RC_D_YY];
 			if (out[F_XX])
-				out[F_XX][k] = dxx;
+				out[F_XX][k] = d[RC_D_XX];
 		}
-	}
 }
 
 int
@@ -154,11 +122,10 @@ rc_deriv_fields(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft,
  * Spectral: the grid is transformed afresh for each field, which costs a
  * transform but saves keeping a copy of the spectrum. */
 static int
-one_field(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft, enum field d,
+one_field(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft, enum rc_deriv d,
     double *out, rc_err *err)
 {
 	size_t n = rc_grid_size(g);
-	long ny = (long)g->ny;
 
 	if (m == RC_DERIV_FD) {
 		double *fields[F_COUNT] = { NULL, NULL, NULL, NULL };
@@ -171,51 +138,12 @@ one_field(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft, enum field d,
 		    fft->nx, fft->ny, g->nx, g->ny);
 	memcpy(fft->real, g->z, n * sizeof(double));
 	rc_fft_forward(fft);
-	#pragma omp parallel for schedule(static)
-	for (long jl = 0; jl < ny; jl++) {
-		size_t j = (size_t)jl;
-		for (size_t i = 0; i < fft->nxc; i++)
-			fft->spec[j * fft->nxc + i] *= spectral_factor(g, d, i, j) /
-			    (double)n;
-	}
+	rc_deriv_spectral(fft->spec, fft->spec, d, g->nx, g->ny, g->lx, g->ly,
+	    0, g->ny);
 	rc_fft_backward(fft);
 	if (out != fft->real)
 		memcpy(out, fft->real, n * sizeof(double));
 	return 0;
-}
-
-double
-rc_gbar_fd(const rc_grid *g)
-{
-	size_t nx = g->nx, ny = g->ny;
-	double dx = g->lx / (double)nx, dy = g->ly / (double)ny, sum, zmax = 0;
-	double part[NPART][16];
-	const double *h = g->z;
-	int e;
-
-	/* Differences scaled by a power of two near the largest height, so
-	 * that their squares neither overflow nor underflow (exact). */
-	for (size_t k = 0; k < nx * ny; k++)
-		if (isfinite(h[k]))
-			zmax = fmax(zmax, fabs(h[k]));
-	e = zmax > 0 ? ilogb(zmax) : 0;
-
-	#pragma omp parallel for schedule(static)
-	for (long p = 0; p < NPART; p++) {
-		double acc = 0;
-		for (size_t j = part_start(p, ny); j < part_start(p + 1, ny); j++) {
-			size_t jp = (j + 1) % ny;
-			for (size_t i = 0; i < nx; i++) {
-				size_t ip = (i + 1) % nx;
-				double a = ldexp(h[j * nx + ip] - h[j * nx + i], -e) / dx;
-				double b = ldexp(h[jp * nx + i] - h[j * nx + i], -e) / dy;
-				acc += a * a + b * b;
-			}
-		}
-		part[p][0] = acc;
-	}
-	ordered_sums(part, 1, &sum);
-	return ldexp(sqrt(sum / (double)(nx * ny)), e);
 }
 
 size_t
@@ -366,6 +294,9 @@ rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
 	return rc;
 }
 
+/* Long: three reduction passes over one derivative buffer, ordered to
+ * need one field at a time; split, their dozen sums would travel in a
+ * struct. */
 static int
 stats_compute(const rc_grid *g, const rc_grid *mask,
     enum rc_deriv_method m, rc_fft *fft, rc_stats *s, rc_err *err)
@@ -485,8 +416,7 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	s->hmin = hmin;
 	s->hmax = hmax;
 	s->gbar = sqrt(gg);
-	/* signed root: -<dh lap h>_c may be negative over a partial mask */
-	s->gbar_prime = dh_lap == 0 ? 0 : copysign(sqrt(fabs(dh_lap)), -dh_lap);
+	s->gbar_prime = rc_signed_root(-dh_lap);
 	s->rms_laplacian = sqrt(lap2);
 	s->mxx = mxx;
 	s->myy = myy;

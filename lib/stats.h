@@ -25,6 +25,7 @@
 
 #include <stddef.h>
 #include "fft.h"
+#include "gradient.h"
 #include "grid.h"
 
 enum rc_deriv_method {
@@ -35,15 +36,15 @@ enum rc_deriv_method {
 const char *rc_deriv_method_name(enum rc_deriv_method m);
 
 /* Derivative fields of the periodic grid; any output may be NULL.
- * Spectral: odd derivatives zero the Nyquist mode, even ones keep it.
- * FD: h_x = (h[i+1] - h[i-1]) / 2dx, h_xx = (h[i+1] - 2h[i] + h[i-1]) / dx^2,
+ * The spectral or the central stencil of gradient.h: spectral odd
+ * derivatives zero the Nyquist mode, even ones keep it; FD:
+ * h_x = (h[i+1] - h[i-1]) / 2dx, h_xx = (h[i+1] - 2h[i] + h[i-1]) / dx^2,
  * lap = h_xx + h_yy, periodic wrap.  fft may be NULL (spectral makes a plan). */
 int rc_deriv_fields(const rc_grid *g, enum rc_deriv_method m, rc_fft *fft,
     double *hx, double *hy, double *lap, double *hxx, rc_err *err);
 
-/* rms of the forward-difference gradient over the whole grid:
- * sqrt(<((h[i+1]-h[i])/dx)^2 + ((h[j+1]-h[j])/dy)^2>). */
-double rc_gbar_fd(const rc_grid *g);
+/* The rms forward-difference gradient of the whole grid (surfstat's
+ * gbar_fd) is rc_gbar_forward (gradient.h). */
 
 /* Check a mask against a grid: same nx, ny, values 0 or 1, at least one 1.
  * Returns the number of points set, or 0 with err filled. */

@@ -263,6 +263,8 @@ blank_line(const char *s, size_t n)
 	return 1;
 }
 
+/* Long: one pass over the table's lines in order (header, rows, ragged
+ * and blank lines); each check sits where its input is read. */
 static int
 parse_tsv(rc_rowset *rs, const char *buf, size_t len, const char *name,
     int lenient, rc_err *err)
@@ -607,6 +609,8 @@ jskip_nested(jcur *j)
 
 /* One object at '{' into a new row.  *bad set (and the row dropped) when
  * lenient and the object is well-formed JSON but not a flat row. */
+/* Long: one pass over a JSON object's members in order; each check sits
+ * where its input is read. */
 static int
 jobject(jcur *j, rc_rowset *rs, int lenient)
 {

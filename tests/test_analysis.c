@@ -31,19 +31,6 @@
 #define EXACT 1e-10
 
 static rc_grid *
-new_grid(size_t nx, size_t ny, double lx, double ly)
-{
-	rc_err err;
-	rc_grid *g = rc_grid_new(nx, ny, lx, ly, &err);
-
-	if (g == NULL) {
-		fprintf(stderr, "test_analysis: %s\n", err.msg);
-		exit(1);
-	}
-	return g;
-}
-
-static rc_grid *
 synth(size_t n, double hurst, double lambda_r, double lambda_s, int rolloff,
     unsigned long seed, int gaussian)
 {
@@ -80,7 +67,7 @@ plane_at(const rc_grid *g, size_t k, double a, double b, double c)
 static void
 test_detrend(void)
 {
-	rc_grid *g = new_grid(40, 30, 2.0, 1.5);
+	rc_grid *g = test_new_grid(40, 30, 2.0, 1.5);
 	rc_err err;
 	double coef[6], maxabs = 0;
 
@@ -119,7 +106,7 @@ test_detrend(void)
 	rc_grid_free(g);
 
 	/* a profile: no y terms to fit (they would make the fit singular) */
-	g = new_grid(50, 1, 5, 0.1);
+	g = test_new_grid(50, 1, 5, 0.1);
 	for (size_t k = 0; k < 50; k++)
 		g->z[k] = 2 - 0.3 * (double)k * 0.1 + 0.01 * (double)(k * k) * 0.01;
 	test_int(rc_detrend(g, RC_DETREND_QUADRATIC, coef, &err), 0,
@@ -132,7 +119,7 @@ test_detrend(void)
 	rc_grid_free(g);
 
 	/* mean keeps periodicity */
-	g = new_grid(8, 8, 1, 1);
+	g = test_new_grid(8, 8, 1, 1);
 	for (size_t k = 0; k < 64; k++)
 		g->z[k] = 5 + (double)(k % 3);
 	rc_detrend(g, RC_DETREND_MEAN, NULL, &err);
@@ -144,7 +131,7 @@ test_detrend(void)
 static void
 test_align(void)
 {
-	rc_grid *g = new_grid(9, 5, 1, 1);
+	rc_grid *g = test_new_grid(9, 5, 1, 1);
 	rc_err err;
 	double maxabs = 0;
 
@@ -175,7 +162,7 @@ static void
 test_fill(void)
 {
 	for (int periodic = 0; periodic < 2; periodic++) {
-		rc_grid *g = new_grid(48, 40, 1.2, 1.0);
+		rc_grid *g = test_new_grid(48, 40, 1.2, 1.0);
 		unsigned char *mask = NULL;
 		size_t nf = 0, nmiss = 0;
 		rc_err err;
@@ -216,7 +203,7 @@ test_fill(void)
 static void
 test_crop_transpose_resample(void)
 {
-	rc_grid *g = new_grid(16, 12, 1.6, 1.2), *c, *t, *r;
+	rc_grid *g = test_new_grid(16, 12, 1.6, 1.2), *c, *t, *r;
 	rc_err err;
 	double maxerr = 0;
 
@@ -270,7 +257,7 @@ test_crop_transpose_resample(void)
 static void
 test_iso(void)
 {
-	rc_grid *g = new_grid(64, 64, 1, 1);
+	rc_grid *g = test_new_grid(64, 64, 1, 1);
 	rc_iso iso;
 	rc_err err;
 	double a = 0.3, slope = 0.4;
@@ -393,7 +380,7 @@ test_window(void)
 {
 	const char *names[] = { "none", "hann", "blackman", "tukey" };
 	gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-	rc_grid *g = new_grid(128, 128, 2, 2);
+	rc_grid *g = test_new_grid(128, 128, 2, 2);
 	rc_err err;
 
 	gsl_rng_set(rng, 11);
@@ -499,8 +486,8 @@ test_psd1d(void)
 	test_rel(sum, var, EXACT, "1D Parseval along x");
 	free(pt);
 	/* profiles: row 0 as nx x 1 with ly 1 and ly 5 */
-	p1 = new_grid(64, 1, 1, 1);
-	p5 = new_grid(64, 1, 1, 5);
+	p1 = test_new_grid(64, 1, 1, 1);
+	p5 = test_new_grid(64, 1, 1, 5);
 	memcpy(p1->z, g->z, 64 * sizeof(double));
 	memcpy(p5->z, g->z, 64 * sizeof(double));
 	rc_psd1d(p1, RC_PSD1D_X, RC_WINDOW_AUTO, &q1, &n1, &err);
@@ -523,7 +510,7 @@ test_psd1d(void)
 static void
 test_acf(void)
 {
-	rc_grid *g = new_grid(32, 16, 3.2, 1.6);
+	rc_grid *g = test_new_grid(32, 16, 3.2, 1.6);
 	rc_acf_point *p;
 	size_t np;
 	rc_err err;

@@ -16,16 +16,6 @@
 #include "io.h"
 #include "testlib.h"
 
-static char path_buf[4][512];
-
-static const char *
-tmp(int slot, const char *name)
-{
-	snprintf(path_buf[slot], sizeof(path_buf[slot]), "%s/%s", test_tmpdir(),
-	    name);
-	return path_buf[slot];
-}
-
 static int
 is_chardev(const char *path)
 {
@@ -48,7 +38,7 @@ test_regular_and_links(void)
 	rc_atomic a;
 	rc_err err;
 	struct stat st;
-	const char *target = tmp(0, "target.txt"), *link = tmp(1, "link.txt");
+	const char *target = test_slot_path(0, "target.txt"), *link = test_slot_path(1, "link.txt");
 
 	/* A new file: written to a temporary beside it, renamed at commit. */
 	test_int(rc_atomic_open(&a, target, &err), 0, "open a new file");
@@ -68,11 +58,11 @@ test_regular_and_links(void)
 	test_int(file_size(target), 7, "the target has the new content");
 
 	/* A dangling link: the file is made where it points. */
-	test_int(symlink("made.txt", tmp(2, "dangling.txt")), 0, "make a dangling link");
-	test_int(rc_atomic_open(&a, path_buf[2], &err), 0, "open a dangling link");
+	test_int(symlink("made.txt", test_slot_path(2, "dangling.txt")), 0, "make a dangling link");
+	test_int(rc_atomic_open(&a, test_slot_path(2, "dangling.txt"), &err), 0, "open a dangling link");
 	fputs("x", a.fp);
 	test_int(rc_atomic_commit(&a, &err), 0, "commit through a dangling link");
-	test_int(file_size(tmp(3, "made.txt")), 1, "the file is made where the link points");
+	test_int(file_size(test_slot_path(3, "made.txt")), 1, "the file is made where the link points");
 
 	/* Removal of a finished output: through the link, the file. */
 	test_int(rc_atomic_remove(link, &err), 0, "remove through a link");
@@ -116,28 +106,28 @@ test_check_and_pending(void)
 
 	test_int(rc_atomic_check("", &err), -1, "check: an empty name is refused");
 	test_int(rc_atomic_check(test_tmpdir(), &err), -1, "check: a directory is refused");
-	test_int(rc_atomic_check(tmp(0, "nodir/x.surf"), &err), -1,
+	test_int(rc_atomic_check(test_slot_path(0, "nodir/x.surf"), &err), -1,
 	    "check: a missing directory is refused");
 	test_true(strstr(err.msg, "does not exist") != NULL, "... saying so (%s)", err.msg);
-	test_int(rc_atomic_check(tmp(0, "new.surf"), &err), 0, "check: a new file is fine");
-	test_true(access(path_buf[0], F_OK) != 0, "check creates nothing");
+	test_int(rc_atomic_check(test_slot_path(0, "new.surf"), &err), 0, "check: a new file is fine");
+	test_true(access(test_slot_path(0, "new.surf"), F_OK) != 0, "check creates nothing");
 	test_int(rc_atomic_check("/dev/null", &err), 0, "check: /dev/null is fine");
 	test_int(rc_atomic_check("/dev/fd/987", &err), -1, "check: a closed descriptor is refused");
 	test_int(rc_atomic_check("-", &err), 0, "check: standard output is fine");
 
 	/* What a signal handler removes: the temporaries still open. */
-	test_int(rc_atomic_open(&a, tmp(1, "pending.surf"), &err), 0, "open for the signal case");
+	test_int(rc_atomic_open(&a, test_slot_path(1, "pending.surf"), &err), 0, "open for the signal case");
 	test_true(a.tmp != NULL && access(a.tmp, F_OK) == 0, "its temporary exists");
 	test_int(rc_atomic_unlink_pending(), 1, "unlink_pending removes one file");
 	test_true(access(a.tmp, F_OK) != 0, "the temporary is gone");
 	test_int(rc_atomic_unlink_pending(), 0, "a second call removes nothing");
 	rc_atomic_abort(&a);
-	test_true(access(path_buf[1], F_OK) != 0, "the target was never made");
+	test_true(access(test_slot_path(1, "pending.surf"), F_OK) != 0, "the target was never made");
 
 	/* A temporary file made otherwise, tracked: removed by the handler
 	 * until it is untracked. */
 	{
-		const char *own = tmp(1, "own.gp");
+		const char *own = test_slot_path(1, "own.gp");
 		FILE *fp = fopen(own, "w");
 
 		test_true(fp != NULL && fclose(fp) == 0, "own temporary made");
@@ -163,7 +153,7 @@ test_metadata_round_trip(void)
 	const char *want = "surfgen -o a\\x01b\\x0a\351\tc.surf \\x7f";
 	rc_grid *g, *r;
 	rc_err err;
-	const char *path = tmp(0, "meta.surf");
+	const char *path = test_slot_path(0, "meta.surf");
 	uint64_t h1, h2;
 
 	if ((g = rc_grid_new(4, 2, 1, 1, &err)) == NULL) {

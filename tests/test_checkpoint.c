@@ -18,16 +18,6 @@
 #define NX 8
 #define NY 6
 
-static char path_buf[4][512];
-
-static const char *
-tmp(int slot, const char *name)
-{
-	snprintf(path_buf[slot], sizeof(path_buf[slot]), "%s/%s", test_tmpdir(),
-	    name);
-	return path_buf[slot];
-}
-
 static rc_grid *
 indenter(void)
 {
@@ -89,9 +79,9 @@ round_trip(void)
 	z[1] = 4.9e-324;
 	z[2] = -0.0;
 	z[3] = 1.7976931348623157e308;
-	test_int(rc_checkpoint_write(&c, z, tmp(0, "a.ck"), &err), 0,
+	test_int(rc_checkpoint_write(&c, z, test_slot_path(0, "a.ck"), &err), 0,
 	    "write: %s", err.msg);
-	test_int(rc_checkpoint_read(&back, &u, tmp(0, "a.ck"), &err), 0,
+	test_int(rc_checkpoint_read(&back, &u, test_slot_path(0, "a.ck"), &err), 0,
 	    "read back: %s", err.msg);
 	if (u == NULL) {
 		rc_checkpoint_free(&c);
@@ -214,7 +204,7 @@ refused(const char *key, const char *val, const char *want)
 	rc_grid *u = (rc_grid *)1;
 	rc_err err;
 
-	g = rc_grid_read(tmp(0, "a.ck"), NULL, &err);
+	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
 	if (g == NULL) {
 		test_true(0, "re-read a.ck: %s", err.msg);
 		return;
@@ -223,9 +213,9 @@ refused(const char *key, const char *val, const char *want)
 		rc_grid_meta_unset(g, key);
 	else
 		rc_grid_meta_set(g, key, val, &err);
-	rc_grid_write(g, tmp(1, "b.ck"), RC_FMT_SURF, &err);
+	rc_grid_write(g, test_slot_path(1, "b.ck"), RC_FMT_SURF, &err);
 	rc_grid_free(g);
-	test_int(rc_checkpoint_read(&c, &u, tmp(1, "b.ck"), &err), -1,
+	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "b.ck"), &err), -1,
 	    "%s = %s: refused", key, val ? val : "(none)");
 	test_true(u == NULL, "%s = %s: no displacement handed out", key,
 	    val ? val : "(none)");
@@ -245,7 +235,7 @@ bad_files(void)
 	long size;
 
 	fill(&c, g);
-	test_int(rc_checkpoint_write(&c, z, tmp(0, "a.ck"), &err), 0, "write");
+	test_int(rc_checkpoint_write(&c, z, test_slot_path(0, "a.ck"), &err), 0, "write");
 	rc_checkpoint_free(&c);
 	rc_grid_free(g);
 
@@ -276,7 +266,7 @@ bad_files(void)
 
 	/* The grid itself: a height field, a missing (NaN) value. */
 	for (int t = 0; t < 2; t++) {
-		rc_grid *g2 = rc_grid_read(tmp(0, "a.ck"), NULL, &err);
+		rc_grid *g2 = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
 
 		if (g2 == NULL)
 			break;
@@ -284,10 +274,10 @@ bad_files(void)
 			g2->kind = RC_KIND_HEIGHT;
 		else
 			g2->z[5] = NAN;
-		rc_grid_write(g2, tmp(1, "g.ck"), RC_FMT_SURF, &err);
+		rc_grid_write(g2, test_slot_path(1, "g.ck"), RC_FMT_SURF, &err);
 		rc_grid_free(g2);
 		u = (rc_grid *)1;
-		test_int(rc_checkpoint_read(&c, &u, tmp(1, "g.ck"), &err), -1,
+		test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "g.ck"), &err), -1,
 		    "%s: refused (%s)", t ? "a NaN displacement" : "kind height",
 		    err.msg);
 		test_true(u == NULL && strstr(err.msg, t ? "not finite" :
@@ -296,7 +286,7 @@ bad_files(void)
 	}
 
 	/* A truncated file (cut inside the values, and inside the header). */
-	fp = fopen(tmp(0, "a.ck"), "rb");
+	fp = fopen(test_slot_path(0, "a.ck"), "rb");
 	fseek(fp, 0, SEEK_END);
 	size = ftell(fp);
 	rewind(fp);
@@ -306,11 +296,11 @@ bad_files(void)
 	for (int cut = 0; cut < 2; cut++) {
 		long keep = cut ? size / 3 : size - 8;
 
-		fp = fopen(tmp(1, "t.ck"), "wb");
+		fp = fopen(test_slot_path(1, "t.ck"), "wb");
 		fwrite(bytes, 1, (size_t)keep, fp);
 		fclose(fp);
 		u = (rc_grid *)1;
-		test_int(rc_checkpoint_read(&c, &u, tmp(1, "t.ck"), &err), -1,
+		test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "t.ck"), &err), -1,
 		    "truncated to %ld of %ld bytes: refused (%s)", keep, size,
 		    err.msg);
 		test_true(u == NULL, "truncated: no displacement handed out");
@@ -345,9 +335,9 @@ saturation(void)
 	    LONG_MAX - 1, "iterations: 2 (LONG_MAX / 2) does not saturate");
 	fill(&c, g);
 	c.iterations = LONG_MAX;
-	test_int(rc_checkpoint_write(&c, z, tmp(0, "max.ck"), &err), 0,
+	test_int(rc_checkpoint_write(&c, z, test_slot_path(0, "max.ck"), &err), 0,
 	    "write with iterations LONG_MAX: %s", err.msg);
-	test_int(rc_checkpoint_read(&back, &u, tmp(0, "max.ck"), &err), 0,
+	test_int(rc_checkpoint_read(&back, &u, test_slot_path(0, "max.ck"), &err), 0,
 	    "read it back: %s", err.msg);
 	test_int(back.iterations, LONG_MAX, "iterations LONG_MAX back");
 	test_int(rc_checkpoint_iterations_add(back.iterations, 1), LONG_MAX,

@@ -289,7 +289,7 @@ test_cosine(void)
 		    "cosine gbar_c by central differences");
 		test_rel(st.gbar_c_prime, sqrt(lap_factor * s_lap / n_c), 1e-12,
 		    "cosine gbar_c' by the 5-point Laplacian");
-		test_rel(rc_contact_gbar_fd(h), grad_factor * amp * k / sqrt(2), 1e-12,
+		test_rel(rc_gbar_central(h), grad_factor * amp * k / sqrt(2), 1e-12,
 		    "central-difference rms gradient of the whole cosine");
 	}
 	free(m);

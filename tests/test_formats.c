@@ -16,27 +16,6 @@
 #include "md5.h"
 #include "testlib.h"
 
-static const char *
-tmp(const char *name)
-{
-	static char path[4][512];
-	static int k;
-
-	k = (k + 1) % 4;
-	snprintf(path[k], sizeof(path[k]), "%s/%s", test_tmpdir(), name);
-	return path[k];
-}
-
-static void
-put_file(const char *path, const void *p, size_t n)
-{
-	FILE *fp = fopen(path, "wb");
-
-	if (fp == NULL || fwrite(p, 1, n, fp) != n)
-		abort();
-	fclose(fp);
-}
-
 static void
 test_md5(void)
 {
@@ -120,9 +99,9 @@ roundtrip(int fmt, const char *name, int masked, int periodic)
 	g->periodic = periodic;
 	snprintf(what, sizeof(what), "%s%s%s", name, masked ? " masked" : "",
 	    periodic ? " periodic" : "");
-	test_true(rc_grid_write(g, tmp(name), (enum rc_format)fmt, &err) == 0,
+	test_true(rc_grid_write(g, test_path(name), (enum rc_format)fmt, &err) == 0,
 	    "%s: write: %s", what, err.msg);
-	r = rc_grid_read(tmp(name), NULL, &err);
+	r = rc_grid_read(test_path(name), NULL, &err);
 	if (r == NULL)
 		printf("  (%s: %s)\n", what, err.msg);
 	same(g, r, what, fmt == RC_FMT_NC);
@@ -150,8 +129,8 @@ test_roundtrips(void)
 	strcpy(g->z_unit, "um");
 	g->lx = 3.5;
 	g->ly = 2.5;
-	rc_grid_write(g, tmp("um.x3p"), RC_FMT_X3P, &err);
-	r = rc_grid_read(tmp("um.x3p"), NULL, &err);
+	rc_grid_write(g, test_path("um.x3p"), RC_FMT_X3P, &err);
+	r = rc_grid_read(test_path("um.x3p"), NULL, &err);
 	test_true(r != NULL && strcmp(r->unit, "m") == 0, "x3p in um reads as m");
 	if (r != NULL) {
 		double worst = 0;
@@ -164,8 +143,8 @@ test_roundtrips(void)
 	rc_grid_free(r);
 	/* netCDF has one unit: lengths go to the height unit, heights stay. */
 	strcpy(g->z_unit, "nm");
-	rc_grid_write(g, tmp("nm.nc"), RC_FMT_NC, &err);
-	r = rc_grid_read(tmp("nm.nc"), NULL, &err);
+	rc_grid_write(g, test_path("nm.nc"), RC_FMT_NC, &err);
+	r = rc_grid_read(test_path("nm.nc"), NULL, &err);
 	test_true(r != NULL && strcmp(r->unit, "nm") == 0 &&
 	    strcmp(r->z_unit, "nm") == 0, "nc um x nm: unit nm");
 	if (r != NULL) {
@@ -175,9 +154,9 @@ test_roundtrips(void)
 	rc_grid_free(r);
 	/* Non-lengths have no place in either. */
 	strcpy(g->z_unit, "V");
-	test_true(rc_grid_write(g, tmp("v.x3p"), RC_FMT_X3P, &err) != 0 &&
+	test_true(rc_grid_write(g, test_path("v.x3p"), RC_FMT_X3P, &err) != 0 &&
 	    strstr(err.msg, "'V'") != NULL, "x3p refuses z unit V: %s", err.msg);
-	test_true(rc_grid_write(g, tmp("v.nc"), RC_FMT_NC, &err) != 0,
+	test_true(rc_grid_write(g, test_path("v.nc"), RC_FMT_NC, &err) != 0,
 	    "nc refuses um x V: %s", err.msg);
 	rc_grid_free(g);
 }
@@ -320,7 +299,7 @@ make_gwy(const char *path, uint32_t nclaim_height)
 	b_field(&c, "/1/mask", 4, 3, 2e-6, "m", "", m, 12);
 	b_put(&f, "GWYP", 4);
 	b_object(&f, "GwyContainer", &c);
-	put_file(path, f.p, f.n);
+	test_put_file(path, f.p, f.n);
 	free(c.p);
 	free(f.p);
 	free(other.p);
@@ -335,8 +314,8 @@ test_gwy(void)
 	rc_err err;
 	rc_grid *g;
 
-	make_gwy(tmp("two.gwy"), 12);
-	test_true(rc_grid_list_channels(tmp("two.gwy"), NULL, &ci, &n, &err) == 0,
+	make_gwy(test_path("two.gwy"), 12);
+	test_true(rc_grid_list_channels(test_path("two.gwy"), NULL, &ci, &n, &err) == 0,
 	    "gwy: list channels: %s", err.msg);
 	test_int((long long)n, 2, "gwy: two channels");
 	if (n == 2) {
@@ -350,7 +329,7 @@ test_gwy(void)
 	}
 	free(ci);
 	/* Default: the first channel whose values are lengths. */
-	g = rc_grid_read(tmp("two.gwy"), NULL, &err);
+	g = rc_grid_read(test_path("two.gwy"), NULL, &err);
 	test_true(g != NULL && strcmp(g->z_unit, "m") == 0 && g->valid != NULL,
 	    "gwy: default channel is Height: %s", g ? g->z_unit : err.msg);
 	if (g != NULL) {
@@ -363,24 +342,24 @@ test_gwy(void)
 	rc_grid_free(g);
 	rc_read_opts_init(&o);
 	o.channel_name = "phase";
-	g = rc_grid_read(tmp("two.gwy"), &o, &err);
+	g = rc_grid_read(test_path("two.gwy"), &o, &err);
 	test_true(g != NULL && strcmp(g->z_unit, "deg") == 0,
 	    "gwy: --channel phase (any case)");
 	rc_grid_free(g);
 	o.channel_name = NULL;
 	o.channel = 3;
-	g = rc_grid_read(tmp("two.gwy"), &o, &err);
+	g = rc_grid_read(test_path("two.gwy"), &o, &err);
 	test_true(g == NULL && strstr(err.msg, "no channel 3") != NULL,
 	    "gwy: channel 3 refused: %s", err.msg);
 	rc_grid_free(g);
 	/* A data array that claims more values than the file holds. */
-	make_gwy(tmp("lie.gwy"), 1u << 30);
-	g = rc_grid_read(tmp("lie.gwy"), NULL, &err);
+	make_gwy(test_path("lie.gwy"), 1u << 30);
+	g = rc_grid_read(test_path("lie.gwy"), NULL, &err);
 	test_true(g == NULL && strstr(err.msg, "corrupt .gwy") != NULL,
 	    "gwy: lying data count refused: %s", err.msg);
 	rc_grid_free(g);
-	make_gwy(tmp("short.gwy"), 13);
-	g = rc_grid_read(tmp("short.gwy"), NULL, &err);
+	make_gwy(test_path("short.gwy"), 13);
+	g = rc_grid_read(test_path("short.gwy"), NULL, &err);
 	test_true(g == NULL && strstr(err.msg, "corrupt .gwy") != NULL,
 	    "gwy: 13 values for 4x3 refused: %s", err.msg);
 	rc_grid_free(g);
@@ -399,8 +378,8 @@ test_sdf(void)
 	rc_err err;
 	rc_grid *g;
 
-	put_file(tmp("a.sdf"), ascii, strlen(ascii));
-	g = rc_grid_read(tmp("a.sdf"), NULL, &err);
+	test_put_file(test_path("a.sdf"), ascii, strlen(ascii));
+	g = rc_grid_read(test_path("a.sdf"), NULL, &err);
 	test_true(g != NULL, "sdf ascii: %s", g ? "" : err.msg);
 	if (g != NULL) {
 		test_true(g->nx == 3 && g->ny == 2, "sdf ascii: 3x2");
@@ -425,8 +404,8 @@ test_sdf(void)
 		bin[81 + 2 * k] = (unsigned char)(raw[k] & 255);
 		bin[82 + 2 * k] = (unsigned char)((uint16_t)raw[k] >> 8);
 	}
-	put_file(tmp("b.sdf"), bin, sizeof(bin));
-	g = rc_grid_read(tmp("b.sdf"), NULL, &err);
+	test_put_file(test_path("b.sdf"), bin, sizeof(bin));
+	g = rc_grid_read(test_path("b.sdf"), NULL, &err);
 	test_true(g != NULL, "sdf binary: %s", g ? "" : err.msg);
 	if (g != NULL) {
 		test_true(g->z[1] == -2 * 0.5e-9 && g->z[5] == 6 * 0.5e-9, "sdf binary: values");
@@ -434,8 +413,8 @@ test_sdf(void)
 		test_rel(g->lx, 3e-6, 1e-15, "sdf binary: lx");
 	}
 	rc_grid_free(g);
-	put_file(tmp("c.sdf"), bin, sizeof(bin) - 1);
-	g = rc_grid_read(tmp("c.sdf"), NULL, &err);
+	test_put_file(test_path("c.sdf"), bin, sizeof(bin) - 1);
+	g = rc_grid_read(test_path("c.sdf"), NULL, &err);
 	test_true(g == NULL && strstr(err.msg, "truncated") != NULL,
 	    "sdf binary truncated: %s", err.msg);
 	rc_grid_free(g);
@@ -485,9 +464,9 @@ test_x3p_foreign(void)
 		bin[2 * k] = (unsigned char)((uint16_t)v[k] & 255);
 		bin[2 * k + 1] = (unsigned char)((uint16_t)v[k] >> 8);
 	}
-	make_x3p(tmp("i.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
+	make_x3p(test_path("i.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
 	    "</PointDataLink></DataLink>", bin, sizeof(bin));
-	g = rc_grid_read(tmp("i.x3p"), NULL, &err);
+	g = rc_grid_read(test_path("i.x3p"), NULL, &err);
 	test_true(g != NULL, "x3p int16: %s", g ? "" : err.msg);
 	if (g != NULL) {
 		for (int k = 0; k < 6; k++)
@@ -497,17 +476,17 @@ test_x3p_foreign(void)
 		test_rel(g->ly, 0.5e-6, 2.3e-16, "x3p int16: ly");
 	}
 	rc_grid_free(g);
-	make_x3p(tmp("l.x3p"), "D", "<DataList><Datum>1</Datum><Datum>2</Datum>"
+	make_x3p(test_path("l.x3p"), "D", "<DataList><Datum>1</Datum><Datum>2</Datum>"
 	    "<Datum></Datum><Datum>4</Datum><Datum>5</Datum><Datum>6</Datum>"
 	    "</DataList>", NULL, 0);
-	g = rc_grid_read(tmp("l.x3p"), NULL, &err);
+	g = rc_grid_read(test_path("l.x3p"), NULL, &err);
 	test_true(g != NULL && g->z[5] == 6 * 2e-9 + 1e-6 && g->valid != NULL &&
 	    !g->valid[2] && isnan(g->z[2]), "x3p DataList, an empty Datum missing: %s",
 	    g ? "" : err.msg);
 	rc_grid_free(g);
-	make_x3p(tmp("s.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
+	make_x3p(test_path("s.x3p"), "I", "<DataLink><PointDataLink>bindata/data.bin"
 	    "</PointDataLink></DataLink>", bin, sizeof(bin) - 2);
-	g = rc_grid_read(tmp("s.x3p"), NULL, &err);
+	g = rc_grid_read(test_path("s.x3p"), NULL, &err);
 	test_true(g == NULL && strstr(err.msg, "holds 10 bytes") != NULL,
 	    "x3p: short data file refused: %s", err.msg);
 	rc_grid_free(g);

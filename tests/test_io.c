@@ -64,26 +64,6 @@ same_header(const rc_grid *a, const rc_grid *b)
 	return 1;
 }
 
-static const char *
-tmp(const char *name)
-{
-	static char path[4][512];
-	static int k;
-
-	k = (k + 1) % 4;
-	snprintf(path[k], sizeof(path[k]), "%s/%s", test_tmpdir(), name);
-	return path[k];
-}
-
-static void
-put_file(const char *path, const void *p, size_t n)
-{
-	FILE *fp = fopen(path, "wb");
-
-	fwrite(p, 1, n, fp);
-	fclose(fp);
-}
-
 static void
 test_roundtrip(void)
 {
@@ -92,26 +72,26 @@ test_roundtrip(void)
 	rc_read_opts o = { .lx = 2.5, .ly = 1.75, .have_l = 1, .allow_nonfinite = 0 };
 
 	/* Native: everything exact, bit for bit. */
-	test_true(rc_grid_write(g, tmp("a.surf"), RC_FMT_SURF, &err) == 0, "write surf");
-	r = rc_grid_read(tmp("a.surf"), NULL, &err);
+	test_true(rc_grid_write(g, test_path("a.surf"), RC_FMT_SURF, &err) == 0, "write surf");
+	r = rc_grid_read(test_path("a.surf"), NULL, &err);
 	test_true(r && same_bits(r, g) && same_header(r, g),
 	    "surf round trip is exact (values, lengths, unit, kind, meta, history)");
 	test_true(r && signbit(r->z[0]), "surf keeps the sign of -0");
 	rc_grid_free(r);
 
 	/* npy: values exact; lengths from -L. */
-	test_true(rc_grid_write(g, tmp("a.npy"), RC_FMT_NPY, &err) == 0, "write npy");
-	r = rc_grid_read(tmp("a.npy"), &o, &err);
+	test_true(rc_grid_write(g, test_path("a.npy"), RC_FMT_NPY, &err) == 0, "write npy");
+	r = rc_grid_read(test_path("a.npy"), &o, &err);
 	test_true(r && same_bits(r, g) && r->lx == 2.5 && r->ly == 1.75,
 	    "npy round trip is exact, cell size from -L");
 	rc_grid_free(r);
-	r = rc_grid_read(tmp("a.npy"), NULL, &err);
+	r = rc_grid_read(test_path("a.npy"), NULL, &err);
 	test_true(r && r->lx == 1 && r->ly == 1, "npy without -L has L = 1");
 	rc_grid_free(r);
 
 	/* txt: %.17g reads back exactly; the comments carry the header. */
-	test_true(rc_grid_write(g, tmp("a.txt"), RC_FMT_TXT, &err) == 0, "write txt");
-	r = rc_grid_read(tmp("a.txt"), NULL, &err);
+	test_true(rc_grid_write(g, test_path("a.txt"), RC_FMT_TXT, &err) == 0, "write txt");
+	r = rc_grid_read(test_path("a.txt"), NULL, &err);
 	test_true(r && same_bits(r, g) && same_header(r, g),
 	    "txt round trip is exact (%%.17g), header kept in comments: %s",
 	    r ? "" : err.msg);
@@ -119,8 +99,8 @@ test_roundtrip(void)
 
 	/* gsf: float32.  Round to nearest gives a relative error of at most
 	 * 2^-24 for normal float32 values (all of these are). */
-	test_true(rc_grid_write(tame, tmp("a.gsf"), RC_FMT_GSF, &err) == 0, "write gsf");
-	r = rc_grid_read(tmp("a.gsf"), NULL, &err);
+	test_true(rc_grid_write(tame, test_path("a.gsf"), RC_FMT_GSF, &err) == 0, "write gsf");
+	r = rc_grid_read(test_path("a.gsf"), NULL, &err);
 	test_true(r != NULL, "read gsf back: %s", r ? "" : err.msg);
 	if (r != NULL) {
 		double worst = 0;
@@ -140,9 +120,9 @@ test_roundtrip(void)
 		memset(longkey, 'k', 400);
 		longkey[400] = '\0';
 		test_true(rc_grid_meta_set(tame, longkey, "v", &err) == 0 &&
-		    rc_grid_write(tame, tmp("k.gsf"), RC_FMT_GSF, &err) == 0,
+		    rc_grid_write(tame, test_path("k.gsf"), RC_FMT_GSF, &err) == 0,
 		    "write gsf with a 400-character key");
-		r = rc_grid_read(tmp("k.gsf"), NULL, &err);
+		r = rc_grid_read(test_path("k.gsf"), NULL, &err);
 		test_true(r && rc_grid_meta_get(r, longkey) != NULL &&
 		    strcmp(rc_grid_meta_get(r, longkey), "v") == 0,
 		    "gsf keeps a 400-character metadata key whole");
@@ -150,15 +130,15 @@ test_roundtrip(void)
 		rc_grid_meta_unset(tame, longkey);
 	}
 	/* Beyond float32: an error, not Inf. */
-	test_true(rc_grid_write(g, tmp("b.gsf"), RC_FMT_GSF, &err) != 0 &&
+	test_true(rc_grid_write(g, test_path("b.gsf"), RC_FMT_GSF, &err) != 0 &&
 	    strstr(err.msg, "float32 range") != NULL, "gsf refuses -1.8e308: %s", err.msg);
-	test_true(access(tmp("b.gsf"), F_OK) != 0, "no half-written gsf left behind");
+	test_true(access(test_path("b.gsf"), F_OK) != 0, "no half-written gsf left behind");
 
 	/* A prefixed unit is written in metres (Gwyddion drops prefixes) and
 	 * comes back in its own unit to within round-off. */
 	strcpy(tame->unit, "um");
-	test_true(rc_grid_write(tame, tmp("u.gsf"), RC_FMT_GSF, &err) == 0, "write gsf in um");
-	r = rc_grid_read(tmp("u.gsf"), NULL, &err);
+	test_true(rc_grid_write(tame, test_path("u.gsf"), RC_FMT_GSF, &err) == 0, "write gsf in um");
+	r = rc_grid_read(test_path("u.gsf"), NULL, &err);
 	test_true(r && strcmp(r->unit, "um") == 0, "gsf in um reads back in um");
 	if (r != NULL) {
 		test_rel(r->lx, 2.5, 4 * DBL_EPSILON, "gsf um: lx back");
@@ -168,7 +148,7 @@ test_roundtrip(void)
 	}
 	rc_grid_free(r);
 	{
-		FILE *fp = fopen(tmp("u.gsf"), "rb");
+		FILE *fp = fopen(test_path("u.gsf"), "rb");
 		char head[512] = "";
 
 		fread(head, 1, sizeof(head) - 1, fp);
@@ -182,8 +162,8 @@ test_roundtrip(void)
 		rc_grid *line = rc_grid_new(6, 1, 1, 1, &err);
 
 		line->z[5] = 1.5;
-		rc_grid_write(line, tmp("line.npy"), RC_FMT_NPY, &err);
-		r = rc_grid_read(tmp("line.npy"), NULL, &err);
+		rc_grid_write(line, test_path("line.npy"), RC_FMT_NPY, &err);
+		r = rc_grid_read(test_path("line.npy"), NULL, &err);
 		test_true(r && r->nx == 6 && r->ny == 1 && r->z[5] == 1.5, "1-row grid via npy");
 		rc_grid_free(r);
 		rc_grid_free(line);
@@ -202,8 +182,8 @@ test_surf_layout(void)
 	FILE *fp;
 	char *p;
 
-	rc_grid_write(g, tmp("l.surf"), RC_FMT_SURF, &err);
-	fp = fopen(tmp("l.surf"), "rb");
+	rc_grid_write(g, test_path("l.surf"), RC_FMT_SURF, &err);
+	fp = fopen(test_path("l.surf"), "rb");
 	n = fread(buf, 1, sizeof(buf), fp);
 	fclose(fp);
 	test_true(memcmp(buf, "#surf 1\n# ", 10) == 0 &&
@@ -241,8 +221,8 @@ test_pipe(void)
 		char name[32];
 
 		snprintf(name, sizeof(name), "p.%s", ext[f]);
-		rc_grid_write(src, tmp(name), (enum rc_format)f, &err);
-		snprintf(cmd, sizeof(cmd), "cat '%s'", tmp(name));
+		rc_grid_write(src, test_path(name), (enum rc_format)f, &err);
+		snprintf(cmd, sizeof(cmd), "cat '%s'", test_path(name));
 		fp = popen(cmd, "r");
 		r = rc_grid_read_stream(fp, NULL, &err);
 		pclose(fp);
@@ -257,8 +237,8 @@ test_pipe(void)
 	big = rc_grid_new(301, 257, 1, 1, &err);
 	for (size_t k = 0; k < rc_grid_size(big); k++)
 		big->z[k] = (double)k * 0.125 - 7;
-	rc_grid_write(big, tmp("big.surf"), RC_FMT_SURF, &err);
-	snprintf(cmd, sizeof(cmd), "cat '%s'", tmp("big.surf"));
+	rc_grid_write(big, test_path("big.surf"), RC_FMT_SURF, &err);
+	snprintf(cmd, sizeof(cmd), "cat '%s'", test_path("big.surf"));
 	fp = popen(cmd, "r");
 	r = rc_grid_read_stream(fp, NULL, &err);
 	pclose(fp);
@@ -330,8 +310,8 @@ put64(unsigned char *p, double d, int big)
 static rc_grid *
 read_bytes(const char *name, const void *p, size_t n, rc_err *err)
 {
-	put_file(tmp(name), p, n);
-	return rc_grid_read(tmp(name), NULL, err);
+	test_put_file(test_path(name), p, n);
+	return rc_grid_read(test_path(name), NULL, err);
 }
 
 static void
@@ -440,8 +420,8 @@ bad(const char *what, const void *p, size_t n, const char *want)
 	rc_grid *r;
 	FILE *fp;
 
-	put_file(tmp("bad"), p, n);
-	r = rc_grid_read(tmp("bad"), NULL, &err);
+	test_put_file(test_path("bad"), p, n);
+	r = rc_grid_read(test_path("bad"), NULL, &err);
 	test_true(r == NULL && strstr(err.msg, want) != NULL,
 	    "%s: rejected with '%s' (got '%s')", what, want, err.msg);
 	rc_grid_free(r);
@@ -467,7 +447,7 @@ missing(const char *what, const void *p, size_t n, size_t k)
 	rc_grid *r;
 	FILE *fp;
 
-	put_file(tmp("nan"), p, n);
+	test_put_file(test_path("nan"), p, n);
 	for (int stream = 0; stream < 2; stream++) {
 		size_t nmiss = 0;
 
@@ -476,7 +456,7 @@ missing(const char *what, const void *p, size_t n, size_t k)
 			r = rc_grid_read_stream(fp, NULL, &err);
 			fclose(fp);
 		} else
-			r = rc_grid_read(tmp("nan"), NULL, &err);
+			r = rc_grid_read(test_path("nan"), NULL, &err);
 		for (size_t i = 0; r != NULL && r->valid != NULL &&
 		    i < rc_grid_size(r); i++)
 			nmiss += r->valid[i] == 0;
@@ -569,8 +549,8 @@ test_bad_surf(void)
 		rc_err err;
 		rc_grid *r;
 
-		put_file(tmp("inf.surf"), f, n);
-		r = rc_grid_read(tmp("inf.surf"), &o, &err);
+		test_put_file(test_path("inf.surf"), f, n);
+		r = rc_grid_read(test_path("inf.surf"), &o, &err);
 		test_true(r && isinf(r->z[2]), "allow_nonfinite admits -Inf");
 		rc_grid_free(r);
 	}
@@ -692,13 +672,13 @@ test_bad_txt(void)
 	bads("txt mask", "# kind = mask\n1 0\n0 2\n", "a mask holds only 0 and 1");
 	bads("txt mask NaN", "# kind = mask\n1 0\n0 nan\n", "is NaN; a mask holds only 0 and 1");
 	bads("txt Inf", "1 2\n3 -inf\n", "infinite values are not allowed");
-	put_file(tmp("ok.txt"), ok, strlen(ok));
-	r = rc_grid_read(tmp("ok.txt"), &o, &err);
+	test_put_file(test_path("ok.txt"), ok, strlen(ok));
+	r = rc_grid_read(test_path("ok.txt"), &o, &err);
 	test_true(r && r->nx == 3 && r->ny == 2 && r->z[5] == 6 && r->lx == 3 && r->ly == 4,
 	    "txt with free comments and blank lines, L from -L: %s", r ? "" : err.msg);
 	rc_grid_free(r);
-	put_file(tmp("crlf.txt"), "1\t2\r\n3\t4\r\n", 10);
-	r = rc_grid_read(tmp("crlf.txt"), NULL, &err);
+	test_put_file(test_path("crlf.txt"), "1\t2\r\n3\t4\r\n", 10);
+	r = rc_grid_read(test_path("crlf.txt"), NULL, &err);
 	test_true(r && r->nx == 2 && r->ny == 2 && r->z[3] == 4 && r->lx == 1,
 	    "txt with tabs and CRLF");
 	rc_grid_free(r);
@@ -724,20 +704,20 @@ test_files(void)
 	rc_err err;
 	rc_grid *g = sample(1);
 
-	test_true(rc_grid_read(tmp("nonexistent"), NULL, &err) == NULL &&
+	test_true(rc_grid_read(test_path("nonexistent"), NULL, &err) == NULL &&
 	    strstr(err.msg, "No such file") != NULL, "missing file: %s", err.msg);
 	test_true(rc_grid_read(test_tmpdir(), NULL, &err) == NULL &&
 	    strstr(err.msg, "directory") != NULL, "directory: %s", err.msg);
 	/* Writing over the input is safe (atomic rename). */
-	rc_grid_write(g, tmp("self.surf"), RC_FMT_SURF, &err);
+	rc_grid_write(g, test_path("self.surf"), RC_FMT_SURF, &err);
 	{
-		rc_grid *r = rc_grid_read(tmp("self.surf"), NULL, &err);
+		rc_grid *r = rc_grid_read(test_path("self.surf"), NULL, &err);
 
 		r->z[0] = 42;
-		test_true(rc_grid_write(r, tmp("self.surf"), RC_FMT_SURF, &err) == 0,
+		test_true(rc_grid_write(r, test_path("self.surf"), RC_FMT_SURF, &err) == 0,
 		    "overwrite the input");
 		rc_grid_free(r);
-		r = rc_grid_read(tmp("self.surf"), NULL, &err);
+		r = rc_grid_read(test_path("self.surf"), NULL, &err);
 		test_true(r && r->z[0] == 42, "overwritten file reads back");
 		rc_grid_free(r);
 	}

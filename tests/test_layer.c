@@ -17,6 +17,7 @@
 
 #include "solver.h"
 #include "synth.h"
+#include "rough_cases.h"
 #include "testlib.h"
 
 /* Plane strain, a mode e^{iqx} with q = 1: u_x = i w(z), u_z(z), z into
@@ -150,8 +151,6 @@ make(const rc_grid *g, enum rc_method m, double d, enum rc_substrate sub,
     double nu, double tol)
 {
 	rc_solver_opts o;
-	rc_solver *s;
-	rc_err err;
 
 	rc_solver_defaults(&o);
 	o.method = m;
@@ -159,23 +158,13 @@ make(const rc_grid *g, enum rc_method m, double d, enum rc_substrate sub,
 	o.thickness = d;
 	o.substrate = sub;
 	o.poisson = nu;
-	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
-		fprintf(stderr, "solver_new: %s\n", err.msg);
-		exit(1);
-	}
-	return s;
+	return rc_test_solver(g, &o);
 }
 
 static void
 solve(rc_solver *s, double p, const char *what)
 {
-	rc_solve_result r;
-	rc_err err;
-	int st = rc_solver_solve(s, p, &r, &err);
-
-	if (st < 0)
-		fprintf(stderr, "solve: %s\n", err.msg);
-	test_int(st, 0, "%s converges", what);
+	test_int(rc_test_solve(s, p, NULL), 0, "%s converges", what);
 }
 
 /* h = A cos(2 pi x / L) pressed into full contact: u = h, so sigma = p +
@@ -221,26 +210,6 @@ sine_full_contact(void)
 	rc_grid_free(g);
 }
 
-static rc_grid *
-rough(size_t n)
-{
-	rc_synth_params sp;
-	rc_err err;
-	rc_grid *g;
-
-	rc_synth_defaults(&sp);
-	sp.nx = sp.ny = n;
-	sp.hurst = 0.8;
-	sp.lambda_r = 0.5;
-	sp.seed = 4;
-	sp.rms_gradient = 1;
-	if ((g = rc_synth(&sp, &err)) == NULL) {
-		fprintf(stderr, "synth: %s\n", err.msg);
-		exit(1);
-	}
-	return g;
-}
-
 /* Thin slip layer: every k_q within (qd)^2/3 of k_w = E* / d (2e-4 at the
  * corner of the 32^2 zone for d = 1e-4 L), so each point is a spring:
  * sigma = k_w max(h - l, 0), the level l set by the load (bisection).
@@ -250,7 +219,7 @@ winkler(void)
 {
 	size_t n = 32, N = n * n, k, diff = 0;
 	double d = 1e-4, kw = 1 / d, p = 5, lo, hi, level = 0, err_max = 0;
-	rc_grid *g = rough(n);
+	rc_grid *g = rc_test_rough(n, 0, 4);
 
 	lo = -10;
 	hi = 10;
@@ -298,7 +267,7 @@ thick(void)
 {
 	size_t N = 64 * 64, k, diff = 0;
 	double max = 0;
-	rc_grid *g = rough(64);
+	rc_grid *g = rc_test_rough(64, 0, 4);
 	rc_solver *half = make(g, RC_METHOD_FIRE, 0, RC_SUBSTRATE_NONE, 0, 1e-9);
 	rc_solver *lay = make(g, RC_METHOD_FIRE, 100, RC_SUBSTRATE_BONDED, 0.3,
 	    1e-9);
@@ -320,7 +289,7 @@ thick(void)
 static void
 refusals(void)
 {
-	rc_grid *g = rough(16);
+	rc_grid *g = rc_test_rough(16, 0, 4);
 	rc_solver_opts o;
 	rc_err err;
 

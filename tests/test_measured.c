@@ -16,17 +16,6 @@
 #include "testlib.h"
 #include "units.h"
 
-static const char *
-tmp(const char *name)
-{
-	static char path[4][512];
-	static int k;
-
-	k = (k + 1) % 4;
-	snprintf(path[k], sizeof(path[k]), "%s/%s", test_tmpdir(), name);
-	return path[k];
-}
-
 static rc_grid *
 read_text(const char *text, const rc_read_opts *o, rc_err *err)
 {
@@ -82,10 +71,10 @@ test_common_unit(void)
 	    a->lx == 10 && fabs(a->z[3] - 0.1 * (sin(2.1) + 0.3)) < 1e-15,
 	    "values now in um, size kept");
 	test_true(rc_grid_to_common_unit(b, NULL, &err) == 0, "m x m is a no-op");
-	test_rel(rc_gbar_fd(a), rc_gbar_fd(b), 1e-13, "gbar of um x nm = gbar in m");
+	test_rel(rc_gbar_forward(a), rc_gbar_forward(b), 1e-13, "gbar of um x nm = gbar in m");
 	test_true(rc_grid_to_common_unit(a, "nm", &err) == 0 && a->lx == 10000 &&
 	    strcmp(a->unit, "nm") == 0, "--unit nm converts sizes");
-	test_rel(rc_gbar_fd(a), rc_gbar_fd(b), 1e-13, "gbar unchanged in nm");
+	test_rel(rc_gbar_forward(a), rc_gbar_forward(b), 1e-13, "gbar unchanged in nm");
 
 	/* Heights that are not lengths are refused, naming the unit. */
 	strcpy(b->z_unit, "deg");
@@ -183,9 +172,9 @@ test_roundtrip(void)
 		int ok = 1;
 
 		snprintf(name, sizeof(name), "rt.%s", ext[f]);
-		test_true(rc_grid_write(g, tmp(name), (enum rc_format)f, &err) == 0,
+		test_true(rc_grid_write(g, test_path(name), (enum rc_format)f, &err) == 0,
 		    "write %s", name);
-		r = rc_grid_read(tmp(name), NULL, &err);
+		r = rc_grid_read(test_path(name), NULL, &err);
 		if (r == NULL) {
 			test_true(0, "read %s: %s", name, err.msg);
 			continue;
@@ -408,8 +397,8 @@ test_filled(void)
 		snprintf(name, sizeof(name), "filled.%s", ext[f]);
 		test_int(rc_format_keeps_filled(g, (enum rc_format)f, &err), keeps,
 		    "%s keeps the filled points: %d", name, keeps);
-		if (rc_grid_write(g, tmp(name), (enum rc_format)f, &err) != 0 ||
-		    (r = rc_grid_read(tmp(name), NULL, &err)) == NULL) {
+		if (rc_grid_write(g, test_path(name), (enum rc_format)f, &err) != 0 ||
+		    (r = rc_grid_read(test_path(name), NULL, &err)) == NULL) {
 			test_true(0, "%s: %s", name, err.msg);
 			continue;
 		}
@@ -508,9 +497,9 @@ test_filled(void)
 		g->filled[k] = (k % 512 + k / 512) % 2;
 	test_int(rc_format_keeps_filled(g, RC_FMT_SURF, &err), 0,
 	    "a list of 131072 ranges does not fit");
-	test_int(rc_grid_write(g, tmp("big.surf"), RC_FMT_SURF, &err), 0,
+	test_int(rc_grid_write(g, test_path("big.surf"), RC_FMT_SURF, &err), 0,
 	    "... the grid is written");
-	c = rc_grid_read(tmp("big.surf"), NULL, &err);
+	c = rc_grid_read(test_path("big.surf"), NULL, &err);
 	test_true(c != NULL && c->filled == NULL, "... without the list");
 	rc_grid_free(c);
 	rc_grid_free(g);

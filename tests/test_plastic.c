@@ -10,6 +10,7 @@
 
 #include "solver.h"
 #include "synth.h"
+#include "rough_cases.h"
 #include "testlib.h"
 
 #define TOL	1e-9
@@ -18,64 +19,19 @@ static rc_solver *
 make(const rc_grid *g, enum rc_boundary b, double hardness)
 {
 	rc_solver_opts o;
-	rc_solver *s;
-	rc_err err;
 
 	rc_solver_defaults(&o);
 	o.method = RC_METHOD_CG;
 	o.boundary = b;
 	o.tol = TOL;
 	o.hardness = hardness;
-	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
-		fprintf(stderr, "solver_new: %s\n", err.msg);
-		exit(1);
-	}
-	return s;
-}
-
-static int
-solve(rc_solver *s, double p)
-{
-	rc_solve_result r;
-	rc_err err;
-	int st = rc_solver_solve(s, p, &r, &err);
-
-	if (st < 0)
-		fprintf(stderr, "solve: %s\n", err.msg);
-	return st;
-}
-
-static rc_grid *
-random_surface(size_t n, uint64_t seed)
-{
-	rc_synth_params sp;
-	rc_err err;
-	rc_grid *g;
-
-	rc_synth_defaults(&sp);
-	sp.nx = sp.ny = n;
-	sp.lx = sp.ly = 1;
-	sp.hurst = 0.8;
-	sp.lambda_r = 0.5;
-	sp.lambda_s = 1.0 / 16;
-	sp.seed = seed;
-	sp.rms_gradient = 1;
-	if ((g = rc_synth(&sp, &err)) == NULL) {
-		fprintf(stderr, "synth: %s\n", err.msg);
-		exit(1);
-	}
-	return g;
+	return rc_test_solver(g, &o);
 }
 
 static double
 fraction(const rc_solver *s, size_t n)
 {
-	const unsigned char *c = rc_solver_contact(s);
-	size_t k, nc = 0;
-
-	for (k = 0; k < n; k++)
-		nc += c[k];
-	return (double)nc / (double)n;
+	return (double)rc_test_n_contact(s, n) / (double)n;
 }
 
 /* The bound is exact (the projection writes H), the mean is p to the
@@ -116,7 +72,7 @@ invariants(const rc_solver *s, const rc_grid *g, double p, double H,
 static void
 full_plasticity(void)
 {
-	rc_grid *g = random_surface(64, 3);
+	rc_grid *g = rc_test_rough(64, 1.0 / 16, 3);
 	size_t n = 64 * 64;
 	double H = 0.01, f[] = { 0.5, 0.1 };
 	rc_solver *s = make(g, RC_BOUNDARY_PERIODIC, H);
@@ -124,7 +80,7 @@ full_plasticity(void)
 	for (int i = 0; i < 2; i++) {
 		double p = f[i] * H, ar, ap;
 
-		test_int(solve(s, p), 0, "full plasticity p/H %g converges", f[i]);
+		test_int(rc_test_solve(s, p, NULL), 0, "full plasticity p/H %g converges", f[i]);
 		ar = fraction(s, n);
 		ap = rc_solver_plastic_fraction(s);
 		test_true(ap <= f[i] && f[i] <= ar, "full plasticity: a_plastic "
@@ -142,14 +98,14 @@ full_plasticity(void)
 static void
 elastic_limit(enum rc_boundary b)
 {
-	rc_grid *g = random_surface(32, 5);
+	rc_grid *g = rc_test_rough(32, 1.0 / 16, 5);
 	size_t n = 32 * 32, k, diff = 0;
 	double p = 0.05, d2 = 0;
 	rc_solver *el = make(g, b, 0), *pl = make(g, b, 1e6 * p);
 	const char *bn = rc_boundary_name(b);
 
-	test_int(solve(el, p), 0, "%s elastic converges", bn);
-	test_int(solve(pl, p), 0, "%s H = 1e6 p converges", bn);
+	test_int(rc_test_solve(el, p, NULL), 0, "%s elastic converges", bn);
+	test_int(rc_test_solve(pl, p, NULL), 0, "%s H = 1e6 p converges", bn);
 	for (k = 0; k < n; k++) {
 		double d = rc_solver_pressure(el)[k] - rc_solver_pressure(pl)[k];
 
@@ -192,14 +148,14 @@ flat_punch(void)
 		}
 	p_lim = H * (double)m / (double)(n * n);
 	s = make(g, RC_BOUNDARY_FREE, H);
-	test_int(solve(s, 0.5 * p_lim), 0, "punch p_lim/2 converges");
+	test_int(rc_test_solve(s, 0.5 * p_lim, NULL), 0, "punch p_lim/2 converges");
 	ap = rc_solver_plastic_fraction(s);
 	test_true(ap > 0 && ap < 0.5 * (double)m / (double)(n * n),
 	    "punch p_lim/2: the rim flows (a_plastic %.4f), not the face", ap);
 	test_true(rc_solver_pressure(s)[centre] < H, "punch p_lim/2: centre "
 	    "elastic (sigma %.3f < H)", rc_solver_pressure(s)[centre]);
 	invariants(s, g, 0.5 * p_lim, H, "punch p_lim/2");
-	test_int(solve(s, p_lim), 0, "punch p_lim converges");
+	test_int(rc_test_solve(s, p_lim, NULL), 0, "punch p_lim converges");
 	for (k = 0; k < n * n; k++)
 		if (g->z[k] == 0 && !(rc_solver_pressure(s)[k] >= H * (1 - 1e-12)))
 			break;
@@ -213,7 +169,7 @@ flat_punch(void)
 static void
 refusals(void)
 {
-	rc_grid *g = random_surface(32, 1);
+	rc_grid *g = rc_test_rough(32, 1.0 / 16, 1);
 	rc_solver_opts o;
 	rc_err err;
 	rc_solver *s;

@@ -55,17 +55,6 @@ pixel(const struct image *im, size_t u, size_t v)
 	return im->rgb + 3 * (v * im->width + u);
 }
 
-static char *
-tmppath(const char *name)
-{
-	static char buf[4][512];
-	static int k;
-
-	k = (k + 1) % 4;
-	snprintf(buf[k], sizeof(buf[k]), "%s/%s", test_tmpdir(), name);
-	return buf[k];
-}
-
 static int
 write_png(const rc_grid *g, const char *path, enum rc_png_style style,
     size_t max_size, const rc_grid *overlay)
@@ -137,7 +126,7 @@ test_linear(void)
 	rc_grid *g = rc_grid_new(64, 32, 2.0, 1.0, &err);
 	struct image im;
 	uint8_t first[3], last[3], mid[3];
-	char *path = tmppath("h.png");
+	const char *path = test_path("h.png");
 
 	for (size_t j = 0; j < 32; j++)
 		for (size_t i = 0; i < 64; i++)
@@ -185,7 +174,7 @@ test_aspect_and_strip(void)
 	rc_grid *g = rc_grid_new(64, 64, 2.0, 1.0, &err), *line;
 	struct image im;
 	uint8_t first[3], last[3];
-	char *path = tmppath("a.png");
+	const char *path = test_path("a.png");
 	int ok = 1;
 
 	for (size_t k = 0; k < 64 * 64; k++)
@@ -227,7 +216,7 @@ test_mask_downsampling(void)
 	rc_grid *g = rc_grid_new(300, 150, 2.0, 1.0, &err);
 	struct image im;
 	uint8_t m0[3] = RC_MASK0_RGB, m1[3] = RC_MASK1_RGB, c4[3], c5[3];
-	char *path = tmppath("m.png");
+	const char *path = test_path("m.png");
 	int ok = 1;
 
 	g->kind = RC_KIND_MASK;
@@ -270,7 +259,7 @@ test_log(void)
 	rc_grid *g = rc_grid_new(16, 16, 1, 1, &err);
 	struct image im;
 	uint8_t first[3], last[3], mid[3], nonpos[3] = RC_NONPOS_RGB;
-	char *path = tmppath("p.png");
+	const char *path = test_path("p.png");
 
 	g->kind = RC_KIND_PRESSURE;
 	g->z[1] = 1e-3;
@@ -296,7 +285,7 @@ test_failures(void)
 	rc_err err;
 	rc_grid *g = rc_grid_new(8, 8, 1, 1, &err);
 	struct stat st;
-	char *path = tmppath("nodir/x.png");
+	const char *path = test_path("nodir/x.png");
 
 	test_true(rc_png_write(g, path, NULL, &err) != 0, "unwritable path fails (%s)", err.msg);
 	test_true(stat(path, &st) != 0, "and leaves no file");
@@ -377,7 +366,7 @@ test_annotated(void)
 	rc_png_layout l;
 	rc_png_opts o;
 	uint8_t table[256][3], white[3] = { 255, 255, 255 }, black[3] = { 0, 0, 0 };
-	char *path = tmppath("ann.png"), *bpath = tmppath("bare.png");
+	const char *path = test_path("ann.png"), *bpath = test_path("bare.png");
 	int ok = 1;
 	size_t y, th;
 

@@ -11,6 +11,7 @@
 #include "fft.h"
 #include "solver.h"
 #include "synth.h"
+#include "rough_cases.h"
 #include "testlib.h"
 
 static const enum rc_method methods[2] = { RC_METHOD_FIRE, RC_METHOD_CG };
@@ -20,46 +21,18 @@ make_solver_blocked(const rc_grid *g, enum rc_method m, double tol,
     size_t block_points)
 {
 	rc_solver_opts o;
-	rc_solver *s;
-	rc_err err;
 
 	rc_solver_defaults(&o);
 	o.method = m;
 	o.tol = tol;
 	o.fft_block_points = block_points;
-	if ((s = rc_solver_new(g, &o, &err)) == NULL) {
-		fprintf(stderr, "solver_new: %s\n", err.msg);
-		exit(1);
-	}
-	return s;
+	return rc_test_solver(g, &o);
 }
 
 static rc_solver *
 make_solver(const rc_grid *g, enum rc_method m, double tol)
 {
 	return make_solver_blocked(g, m, tol, RC_FFT_BLOCKED_POINTS);
-}
-
-static int
-solve(rc_solver *s, double p, rc_solve_result *r)
-{
-	rc_err err;
-	int st = rc_solver_solve(s, p, r, &err);
-
-	if (st < 0)
-		fprintf(stderr, "solve: %s\n", err.msg);
-	return st;
-}
-
-static size_t
-n_contact(const rc_solver *s, size_t n)
-{
-	const unsigned char *c = rc_solver_contact(s);
-	size_t k, nc = 0;
-
-	for (k = 0; k < n; k++)
-		nc += c[k];
-	return nc;
 }
 
 /* Westergaard: h = h0 cos(2 pi x / lambda) on nx x 1, lambda = L.  Exact:
@@ -83,9 +56,9 @@ westergaard(enum rc_method m, size_t nx)
 		rc_solve_result r;
 		double ar, exact;
 
-		test_int(solve(s, f * p_fc, &r), 0, "westergaard %s nx %zu p/p_fc %.1f converges",
+		test_int(rc_test_solve(s, f * p_fc, &r), 0, "westergaard %s nx %zu p/p_fc %.1f converges",
 		    rc_method_name(m), nx, f);
-		ar = (double)n_contact(s, nx) / (double)nx;
+		ar = (double)rc_test_n_contact(s, nx) / (double)nx;
 		exact = 2 / M_PI * asin(sqrt(f));
 		test_abs(ar, exact, 2.0 / (double)nx, "westergaard %s nx %zu p/p_fc %.1f a_r",
 		    rc_method_name(m), nx, f);
@@ -115,8 +88,8 @@ full_contact_cosine(enum rc_method m)
 	for (i = 0; i < nx; i++)
 		g->z[i] = h0 * cos(2 * M_PI * (double)i / (double)nx);
 	s = make_solver(g, m, 1e-9);
-	test_int(solve(s, p, &r), 0, "full contact cosine %s converges", rc_method_name(m));
-	test_int((long long)n_contact(s, nx), (long long)nx, "full contact cosine %s a_r = 1",
+	test_int(rc_test_solve(s, p, &r), 0, "full contact cosine %s converges", rc_method_name(m));
+	test_int((long long)rc_test_n_contact(s, nx), (long long)nx, "full contact cosine %s a_r = 1",
 	    rc_method_name(m));
 	sigma = rc_solver_pressure(s);
 	u = rc_solver_displacement(s);
@@ -154,11 +127,11 @@ eggbox(enum rc_method m)
 			g->z[j * n + i] = d * (1 - cos(2 * M_PI * i / (double)n) *
 			    cos(2 * M_PI * j / (double)n));
 	s = make_solver(g, m, 1e-9);
-	test_int(solve(s, 1.02 * p_fc, &r), 0, "eggbox %s 1.02 p_fc converges", rc_method_name(m));
-	test_int((long long)n_contact(s, n * n), (long long)(n * n),
+	test_int(rc_test_solve(s, 1.02 * p_fc, &r), 0, "eggbox %s 1.02 p_fc converges", rc_method_name(m));
+	test_int((long long)rc_test_n_contact(s, n * n), (long long)(n * n),
 	    "eggbox %s full contact at 1.02 p_fc", rc_method_name(m));
-	test_int(solve(s, 0.95 * p_fc, &r), 0, "eggbox %s 0.95 p_fc converges", rc_method_name(m));
-	test_range((double)n_contact(s, n * n), 1, (double)(n * n - 1),
+	test_int(rc_test_solve(s, 0.95 * p_fc, &r), 0, "eggbox %s 0.95 p_fc converges", rc_method_name(m));
+	test_range((double)rc_test_n_contact(s, n * n), 1, (double)(n * n - 1),
 	    "eggbox %s partial contact at 0.95 p_fc", rc_method_name(m));
 	rc_solver_free(s);
 	rc_grid_free(g);
@@ -188,33 +161,11 @@ hertz(enum rc_method m)
 			g->z[j * n + i] = -(x * x + y * y) / (2 * R);
 		}
 	s = make_solver(g, m, 1e-8);
-	test_int(solve(s, F, &r), 0, "hertz %s converges", rc_method_name(m));
-	a_num = sqrt((double)n_contact(s, n * n) * dx * dx / M_PI);
+	test_int(rc_test_solve(s, F, &r), 0, "hertz %s converges", rc_method_name(m));
+	a_num = sqrt((double)rc_test_n_contact(s, n * n) * dx * dx / M_PI);
 	test_abs(a_num, a, dx, "hertz %s contact radius", rc_method_name(m));
 	rc_solver_free(s);
 	rc_grid_free(g);
-}
-
-static rc_grid *
-random_surface(size_t n, uint64_t seed)
-{
-	rc_synth_params sp;
-	rc_err err;
-	rc_grid *g;
-
-	rc_synth_defaults(&sp);
-	sp.nx = sp.ny = n;
-	sp.lx = sp.ly = 1;
-	sp.hurst = 0.8;
-	sp.lambda_r = 0.5;
-	sp.lambda_s = 1.0 / 16;
-	sp.seed = seed;
-	sp.rms_gradient = 1;
-	if ((g = rc_synth(&sp, &err)) == NULL) {
-		fprintf(stderr, "synth: %s\n", err.msg);
-		exit(1);
-	}
-	return g;
 }
 
 /* Invariants of a solution: load, tension, penetration, pressure off
@@ -247,7 +198,7 @@ static void
 methods_agree(void)
 {
 	size_t n = 64, k, nn = n * n, diff = 0;
-	rc_grid *g = random_surface(n, 7);
+	rc_grid *g = rc_test_rough(n, 1.0 / 16, 7);
 	double p = 0.05, tol = 1e-9, d2 = 0, s2 = 0, du = 0, urange = 0;
 	rc_solver *s[2];
 	rc_solve_result r;
@@ -255,7 +206,7 @@ methods_agree(void)
 
 	for (m = 0; m < 2; m++) {
 		s[m] = make_solver(g, methods[m], tol);
-		test_int(solve(s[m], p, &r), 0, "random %s converges", rc_method_name(methods[m]));
+		test_int(rc_test_solve(s[m], p, &r), 0, "random %s converges", rc_method_name(methods[m]));
 		invariants(s[m], g, p, tol, rc_method_name(methods[m]));
 	}
 	for (k = 0; k < nn; k++) {
@@ -288,7 +239,7 @@ static void
 threads(enum rc_method m)
 {
 	size_t n = 64, k, nn = n * n, diff = 0;
-	rc_grid *g = random_surface(n, 3);
+	rc_grid *g = rc_test_rough(n, 1.0 / 16, 3);
 	double p = 0.05, tol = 1e-9, d2 = 0, s2 = 0;
 	const double *a, *b;
 	rc_solver *s[2];
@@ -298,7 +249,7 @@ threads(enum rc_method m)
 	for (t = 0; t < 2; t++) {
 		rc_fft_set_threads(t + 1);
 		s[t] = make_solver(g, m, tol);
-		solve(s[t], p, &r);
+		rc_test_solve(s[t], p, &r);
 	}
 	a = rc_solver_pressure(s[0]);
 	b = rc_solver_pressure(s[1]);
@@ -323,7 +274,7 @@ static void
 sweep(enum rc_method m)
 {
 	size_t n = 64, nn = n * n, prev = 0, nc;
-	rc_grid *g = random_surface(n, 11);
+	rc_grid *g = rc_test_rough(n, 1.0 / 16, 11);
 	rc_solver *s = make_solver(g, m, 1e-8), *t;
 	rc_solve_result r;
 	rc_err err;
@@ -331,8 +282,8 @@ sweep(enum rc_method m)
 	int mono = 1, conv = 1;
 
 	for (p = 0.01; p < 0.5; p *= 1.5) {
-		conv &= solve(s, p, &r) == 0;
-		nc = n_contact(s, nn);
+		conv &= rc_test_solve(s, p, &r) == 0;
+		nc = rc_test_n_contact(s, nn);
 		mono &= nc >= prev;
 		prev = nc;
 	}
@@ -341,8 +292,8 @@ sweep(enum rc_method m)
 	t = make_solver(g, m, 1e-8);
 	rc_solver_set_displacement(t, rc_solver_displacement(s), &err);
 	p /= 1.5;
-	test_int(solve(t, p, &r), 0, "%s: restart from displacement converges", rc_method_name(m));
-	test_int((long long)n_contact(t, nn), (long long)prev, "%s: restart reproduces n_c",
+	test_int(rc_test_solve(t, p, &r), 0, "%s: restart from displacement converges", rc_method_name(m));
+	test_int((long long)rc_test_n_contact(t, nn), (long long)prev, "%s: restart reproduces n_c",
 	    rc_method_name(m));
 	rc_solver_free(s);
 	rc_solver_free(t);
@@ -368,13 +319,13 @@ fire_scaling(void)
 	int z, m;
 
 	for (z = 0; z < 2; z++) {
-		rc_grid *g = random_surface(sizes[z], 5);
+		rc_grid *g = rc_test_rough(sizes[z], 1.0 / 16, 5);
 
 		for (m = 0; m < 2; m++) {
 			rc_solver *s = make_solver(g, methods[m], 1e-6);
 			rc_solve_result r;
 
-			test_int(solve(s, 0.05, &r), 0, "scaling %s %zu^2 converges",
+			test_int(rc_test_solve(s, 0.05, &r), 0, "scaling %s %zu^2 converges",
 			    rc_method_name(methods[m]), sizes[z]);
 			if (methods[m] == RC_METHOD_FIRE) {
 				iters[z] = r.iterations;
@@ -428,8 +379,8 @@ blocked_agrees(void)
 		size_t k, n = g->nx * g->ny, diff = 0;
 		double du = 0, ds = 0, urange = 0, smax = 0;
 
-		test_int(solve(a, 0.05, &ra), 0, "plain %s converges", rc_method_name(methods[m]));
-		test_int(solve(b, 0.05, &rb), 0, "blocked %s converges", rc_method_name(methods[m]));
+		test_int(rc_test_solve(a, 0.05, &ra), 0, "plain %s converges", rc_method_name(methods[m]));
+		test_int(rc_test_solve(b, 0.05, &rb), 0, "blocked %s converges", rc_method_name(methods[m]));
 		test_int(rb.iterations, ra.iterations, "blocked %s: the same iterations",
 		    rc_method_name(methods[m]));
 		for (k = 0; k < n; k++) {

@@ -112,6 +112,49 @@ test_tmpdir(void)
 	return tmpdir;
 }
 
+const char *
+test_path(const char *name)
+{
+	static char path[4][512];
+	static int k;
+
+	k = (k + 1) % 4;
+	snprintf(path[k], sizeof(path[k]), "%s/%s", test_tmpdir(), name);
+	return path[k];
+}
+
+const char *
+test_slot_path(int slot, const char *name)
+{
+	static char path[4][512];
+
+	snprintf(path[slot], sizeof(path[slot]), "%s/%s", test_tmpdir(), name);
+	return path[slot];
+}
+
+void
+test_put_file(const char *path, const void *p, size_t n)
+{
+	FILE *fp = fopen(path, "wb");
+
+	if (fp == NULL || fwrite(p, 1, n, fp) != n)
+		abort();
+	fclose(fp);
+}
+
+rc_grid *
+test_new_grid(size_t nx, size_t ny, double lx, double ly)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(nx, ny, lx, ly, &err);
+
+	if (g == NULL) {
+		fprintf(stderr, "rc_grid_new: %s\n", err.msg);
+		exit(1);
+	}
+	return g;
+}
+
 void
 test_skip(int n, const char *fmt, ...)
 {

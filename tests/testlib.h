@@ -10,6 +10,10 @@
 #ifndef RC_TESTLIB_H
 #define RC_TESTLIB_H
 
+#include <stddef.h>
+
+#include "grid.h"
+
 /* |obs - exp| <= reltol * |exp|  (exp == 0: |obs| <= reltol). */
 void test_rel(double obs, double exp, double reltol, const char *fmt, ...)
 	__attribute__((format(printf, 4, 5)));
@@ -31,5 +35,14 @@ int test_summary(void);
 
 /* A temporary directory for the test's files, removed by test_summary. */
 const char *test_tmpdir(void);
+/* The path of file name in it; the last four results stay valid. */
+const char *test_path(const char *name);
+/* The same in slot 0 ... 3, which stays valid until that slot is used
+ * again. */
+const char *test_slot_path(int slot, const char *name);
+/* Write n bytes to path (abort on failure: set-up, not the test). */
+void test_put_file(const char *path, const void *p, size_t n);
+/* rc_grid_new, the program ended after a message when it fails. */
+rc_grid *test_new_grid(size_t nx, size_t ny, double lx, double ly);
 
 #endif

@@ -364,6 +364,7 @@ tool_usage_check(struct tool *t)
 	exit(2);
 }
 
+/* Long: one case per option, each a few lines; they are read together. */
 int
 tool_common_option(struct tool *t, int opt, const char *arg)
 {

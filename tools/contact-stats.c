@@ -134,6 +134,7 @@ has_control(const char *s)
 	return 0;
 }
 
+/* Long: one case per option, each a few lines; they are read together. */
 static void
 parse(int argc, char **argv, struct opts *o)
 {

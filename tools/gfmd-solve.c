@@ -1,7 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve - contact of a linearly elastic half space on a rigid rough
  * indenter, one result row per pressure (see gfmd-solve(1)). */
-#include <errno.h>
 #include <getopt.h>
 #include <math.h>
 #include <signal.h>
@@ -18,6 +17,7 @@
 #include "common.h"
 #include "contact.h"
 #include "fft.h"
+#include "gradient.h"
 #include "gfmd_opts.h"
 #include "gfmd_row.h"
 #include "png.h"
@@ -147,6 +147,7 @@ show_progress(void *ctx, long iter, double residual, double contact_fraction)
 	pr->shown = 1;
 }
 
+/* Long: the help text, one printf. */
 static void
 usage(void)
 {
@@ -443,9 +444,9 @@ indenter_setup(struct run *r)
 	 * boundaries need none. */
 	memset(&r->fft, 0, sizeof(r->fft));
 	if (o->so.boundary == RC_BOUNDARY_FREE)
-		r->gbar = rc_contact_gbar_open(h);
+		r->gbar = rc_gbar_open(h);
 	else if (o->fd)
-		r->gbar = rc_contact_gbar_fd(h);
+		r->gbar = rc_gbar_central(h);
 	else if (rc_fft_init(&r->fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
 	    rc_rms_gradient(h, &r->fft, &r->gbar, &err) != 0)
 		tool_fail(&r->t, "%s", err.msg);
@@ -639,11 +640,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 	rc_err err;
 	int st;
 
-	*p = o->napproach ? NAN : o->nreduced ?
-	    o->reduced[k] * o->modulus * r->gbar : o->absolute[k];
-	/* Echo a requested p* exactly: p/(E* gbar) rounds. */
-	*p_star = o->nreduced ? o->reduced[k] :
-	    r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
+	gfmd_pressure(o, k, r->gbar, p, p_star);
 	r->pr.p = *p;
 	r->pr.p_star = *p_star;
 	/* A periodic checkpoint stops the solve through o->so.stop; it is
@@ -719,34 +716,15 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .a_attr = rc_solver_attractive_fraction(s),
 		    .l_adh_dx = r->l_adh_dx, .separated = res->separated,
 		    .nx = h->nx, .ny = h->ny };
-		const char *why = gfmd_kappa_c_why(&in);
+		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
+		    &r->table, r->out.fp, &r->nunconverged, &err);
 
-		if (why != NULL)
-			tool_warn(&r->t, "p = %g: kappa_c written as nan: %s", p, why);
-		if (gfmd_result_row(&r->row, &in) != 0) {
+		if (w != 0) {
 			rc_atomic_abort(&r->out);
-			tool_fail(&r->t, "out of memory");
+			if (w == GFMD_ROW_NOMEM)
+				tool_fail(&r->t, "out of memory");
+			tool_fail_at(&r->t, r->t.out, err.msg);
 		}
-	}
-	if (rc_table_write(&r->table, &r->row, &err) != 0) {
-		rc_atomic_abort(&r->out);
-		tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output", err.msg);
-	}
-	if (fflush(r->out.fp) != 0) {
-		rc_atomic_abort(&r->out);
-		tool_fail(&r->t, "%s: %s", r->t.out ? r->t.out : "standard output",
-		    strerror(errno));
-	}
-	if (res->separated)
-		tool_warn(&r->t, "p = %g: no equilibrium: the body separated (no "
-		    "contact, and the tension exceeds the strongest attraction "
-		    "left: past pull-off); row written with separated 1, going "
-		    "on", p);
-	else if (!res->converged) {
-		r->nunconverged++;
-		tool_warn(&r->t, "p = %g: not converged after %ld iterations "
-		    "(residual %.3g, tolerance %.3g); row written, going on",
-		    p, res->iterations, res->residual, o->so.tol);
 	}
 	r->last_p = p;
 	r->last_p_star = p_star;

@@ -64,6 +64,7 @@ static const struct option all_longopts[] = {
 	{ NULL, 0, NULL, 0 }
 };
 
+/* Long: one case per option, each a few lines; they are read together. */
 void
 gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
     char **argv)
@@ -232,6 +233,8 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 		    "run without --checkpoint and --resume");
 }
 
+/* Long: every check between options in one place, so that all problems
+ * are reported together. */
 void
 gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 {

@@ -2,7 +2,9 @@
 /* gfmd_row.c - gfmd-solve's result row (see gfmd_row.h). */
 #include "gfmd_row.h"
 
+#include <errno.h>
 #include <math.h>
+#include <string.h>
 
 int
 gfmd_result_row(rc_row *row, const struct gfmd_row *in)
@@ -71,4 +73,45 @@ gfmd_kappa_c_why(const struct gfmd_row *in)
 		    "only where the indenter is flat, e.g. at the apex of a "
 		    "harmonic indenter), so p*_c = p/(E* gbar_c) is undefined";
 	return "a_r or p*_c is outside the range of Eq. 8";
+}
+
+void
+gfmd_pressure(const struct gfmd_opts *o, size_t k, double gbar, double *p,
+    double *p_star)
+{
+	*p = o->napproach ? NAN : o->nreduced ?
+	    o->reduced[k] * o->modulus * gbar : o->absolute[k];
+	*p_star = o->nreduced ? o->reduced[k] :
+	    gbar > 0 ? *p / (o->modulus * gbar) : NAN;
+}
+
+int
+gfmd_emit_row(const struct tool *t, const struct gfmd_row *in,
+    int converged, rc_row *row, rc_table_out *table, FILE *fp,
+    size_t *nunconverged, rc_err *err)
+{
+	const char *why = gfmd_kappa_c_why(in);
+
+	if (why != NULL)
+		tool_warn(t, "p = %g: kappa_c written as nan: %s", in->p, why);
+	if (gfmd_result_row(row, in) != 0)
+		return GFMD_ROW_NOMEM;
+	if (fp != NULL && rc_table_write(table, row, err) != 0)
+		return GFMD_ROW_WRITE;
+	if (fp != NULL && fflush(fp) != 0) {
+		rc_seterr(err, "%s", strerror(errno));
+		return GFMD_ROW_WRITE;
+	}
+	if (in->separated)
+		tool_warn(t, "p = %g: no equilibrium: the body separated (no "
+		    "contact, and the tension exceeds the strongest attraction "
+		    "left: past pull-off); row written with separated 1, going "
+		    "on", in->p);
+	else if (!converged) {
+		(*nunconverged)++;
+		tool_warn(t, "p = %g: not converged after %ld iterations "
+		    "(residual %.3g, tolerance %.3g); row written, going on",
+		    in->p, in->iterations, in->residual, in->tol);
+	}
+	return 0;
 }

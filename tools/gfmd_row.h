@@ -1,10 +1,15 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd_row.h - the result row of one gfmd-solve pressure, the same columns
- * in the serial tool and its MPI build (gfmd-solve(1), RESULT ROWS). */
+ * in the serial tool and its MPI build (gfmd-solve(1), RESULT ROWS), and
+ * the steps of their pressure loop that both share. */
 #ifndef RC_GFMD_ROW_H
 #define RC_GFMD_ROW_H
 
+#include <stdio.h>
+
+#include "common.h"
 #include "contact.h"
+#include "gfmd_opts.h"
 #include "grid.h"
 #include "solver.h"
 #include "table_write.h"
@@ -39,5 +44,22 @@ int gfmd_result_row(rc_row *row, const struct gfmd_row *in);
 /* The reason (a static string) why kappa_c, written as nan, cannot be
  * computed for this row, or NULL when it is a number. */
 const char *gfmd_kappa_c_why(const struct gfmd_row *in);
+
+/* p and p* of pressure k of the options for an indenter of rms gradient
+ * gbar: p NaN under --approach (the solve finds it); a requested p*
+ * echoed exactly (p/(E* gbar) rounds). */
+void gfmd_pressure(const struct gfmd_opts *o, size_t k, double gbar,
+    double *p, double *p_star);
+/* A pressure done: the row of in into row, written to table and flushed
+ * when fp is not NULL (the process that writes the table), with the
+ * warnings on a nan kappa_c, on a body that separated (in->separated)
+ * and else on a solve that did not converge (converged 0; counted in
+ * *nunconverged).  0; -1: out of memory; -2: the
+ * table could not be written (err: why). */
+#define GFMD_ROW_NOMEM	(-1)
+#define GFMD_ROW_WRITE	(-2)
+int gfmd_emit_row(const struct tool *t, const struct gfmd_row *in,
+    int converged, rc_row *row, rc_table_out *table, FILE *fp,
+    size_t *nunconverged, rc_err *err);
 
 #endif

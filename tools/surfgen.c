@@ -96,109 +96,145 @@ load_like(struct tool *t, const char *path, rc_selfaffine_fit *f, size_t *nx, si
 	}
 }
 
-int
-main(int argc, char **argv)
-{
+/* Everything one run holds, so that main reads as the run's steps. */
+struct run {
 	struct tool t;
 	struct surfgen_opts o;
-	rc_synth_params *p = &o.p;
-	rc_err err;
-	rc_grid *g;
-	int opt, have_n = 0, have_l = 0, spectrum_opts = 0;
-	const char *like = NULL;
-	char like_unit[32] = "";	/* the fit's length unit: the twin's */
-	double plan_seconds, seconds;
-	enum rc_fft_effort effort;
+	const char *like;		/* --like FILE, or NULL */
+	int have_n, have_l;		/* -n, -L given (they win over --like) */
+	char like_unit[32];		/* the fit's length unit: the twin's */
+};
 
-	tool_init(&t, "surfgen", argc, argv);
-	surfgen_opts_init(&o);
+/* --like: the parameters of the self-affine fit of the measurement
+ * (the grid's size and cell unless -n, -L say otherwise). */
+static void
+like_params(struct run *r)
+{
+	rc_synth_params *p = &r->o.p;
+	rc_selfaffine_fit f;
+	size_t nx, ny;
+	double lx, ly;
+	rc_err err;
+
+	tool_input(&r->t, "--like", r->like);	/* checked with the outputs */
+	tool_usage_check(&r->t);
+	gsl_set_error_handler_off();
+	load_like(&r->t, r->like, &f, &nx, &ny, &lx, &ly);
+	if (!r->have_n) {
+		p->nx = nx;
+		p->ny = ny;
+	}
+	if (!r->have_l) {
+		p->lx = lx;
+		p->ly = ly;
+	}
+	p->type = RC_SURF_SELFAFFINE;
+	p->hurst = f.H;
+	p->lambda_r = 2 * M_PI / f.q_r;
+	p->lambda_s = 2 * M_PI / f.q_s;
+	p->rolloff = f.rolloff;
+	p->rms_height = f.hrms;
+	p->rms_gradient = 0;
+	memcpy(r->like_unit, f.unit, sizeof(r->like_unit));
+	/* A cutoff below two spacings of the new grid is the grid's own
+	 * limit (the fit's q_s may be its range end, the Nyquist wave number
+	 * of the measurement). */
+	if (p->lambda_s < 2 * fmax(p->lx / (double)p->nx, p->ly / (double)p->ny))
+		p->lambda_s = 0;
+	if (!r->t.quiet)
+		tool_warn(&r->t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
+		    "lambda_s = %.4g, rms height %.4g%s%s", r->like, p->hurst,
+		    p->lambda_r, p->rolloff ? " (roll-off)" : "",
+		    rc_synth_lambda_s(p), p->rms_height,
+		    r->like_unit[0] ? "; lengths in " : "", r->like_unit);
+	if (rc_synth_check(p, &err) != 0)
+		tool_fail(&r->t, "--like %s: the fitted model cannot be made: %s",
+		    r->like, err.msg);
+}
+
+/* Options into r->o, checked together; 1 after --help. */
+static int
+parse_options(struct run *r, int argc, char **argv)
+{
+	struct tool *t = &r->t;
+	int opt, spectrum_opts = 0;
+
+	tool_init(t, "surfgen", argc, argv);
+	surfgen_opts_init(&r->o);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "hn:L:H:o:j:q", longopts, NULL)) != -1) {
 		if (opt == 'h') {
 			usage();
-			return tool_exit(&t, 0);
+			return 1;
 		}
 		if (opt == OPT_LIKE) {
-			like = optarg;
+			r->like = optarg;
 			continue;
 		}
-		have_n |= opt == 'n';
-		have_l |= opt == 'L';
+		r->have_n |= opt == 'n';
+		r->have_l |= opt == 'L';
 		spectrum_opts |= opt == 'H' || opt == OPT_LAMBDA_R || opt == OPT_LAMBDA_S ||
 		    opt == OPT_ROLLOFF || opt == OPT_RMS_GRADIENT || opt == OPT_RMS_HEIGHT ||
 		    opt == OPT_TYPE;
-		if ((opt != 'L' && tool_common_option(&t, opt, optarg)) ||
-		    surfgen_option(&t, &o, opt, optarg))
+		if ((opt != 'L' && tool_common_option(t, opt, optarg)) ||
+		    surfgen_option(t, &r->o, opt, optarg))
 			continue;
-		tool_bad_option(&t, "hn:L:H:o:j:q", longopts, argv);
+		tool_bad_option(t, "hn:L:H:o:j:q", longopts, argv);
 	}
 	if (optind < argc)
-		tool_bad(&t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
-	if (like != NULL && spectrum_opts)
-		tool_bad(&t, "--like: takes H, lambda_r, lambda_s, rolloff and the rms "
+		tool_bad(t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);
+	if (r->like != NULL && spectrum_opts)
+		tool_bad(t, "--like: takes H, lambda_r, lambda_s, rolloff and the rms "
 		    "height from the fit; -H, --lambda-r, --lambda-s, --rolloff, "
 		    "--rms-gradient, --rms-height and --type do not go with it");
-	if (like != NULL) {
-		rc_selfaffine_fit f;
-		size_t nx, ny;
-		double lx, ly;
-		tool_input(&t, "--like", like);	/* checked with the outputs below */
-		tool_usage_check(&t);
-		gsl_set_error_handler_off();
-		load_like(&t, like, &f, &nx, &ny, &lx, &ly);
-		if (!have_n) {
-			p->nx = nx;
-			p->ny = ny;
-		}
-		if (!have_l) {
-			p->lx = lx;
-			p->ly = ly;
-		}
-		p->type = RC_SURF_SELFAFFINE;
-		p->hurst = f.H;
-		p->lambda_r = 2 * M_PI / f.q_r;
-		p->lambda_s = 2 * M_PI / f.q_s;
-		p->rolloff = f.rolloff;
-		p->rms_height = f.hrms;
-		p->rms_gradient = 0;
-		memcpy(like_unit, f.unit, sizeof(like_unit));
-		/* A cutoff below two spacings of the new grid is the grid's
-		 * own limit (the fit's q_s may be its range end, the Nyquist
-		 * wave number of the measurement). */
-		if (p->lambda_s < 2 * fmax(p->lx / (double)p->nx, p->ly / (double)p->ny))
-			p->lambda_s = 0;
-		if (!t.quiet)
-			tool_warn(&t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
-			    "lambda_s = %.4g, rms height %.4g%s%s", like, p->hurst,
-			    p->lambda_r, p->rolloff ? " (roll-off)" : "",
-			    rc_synth_lambda_s(p), p->rms_height,
-			    like_unit[0] ? "; lengths in " : "", like_unit);
-		if (rc_synth_check(p, &err) != 0)
-			tool_fail(&t, "--like %s: the fitted model cannot be made: %s",
-			    like, err.msg);
-	}
-	surfgen_opts_check(&t, &o);
-	tool_check_grid_path(&t, "-o", t.out);
-	tool_output(&t, "-o", t.out ? t.out : "-", 0);
-	tool_output(&t, "--png", t.png, 1);
-	tool_usage_check(&t);
+	if (r->like != NULL)
+		like_params(r);
+	surfgen_opts_check(t, &r->o);
+	tool_check_grid_path(t, "-o", t->out);
+	tool_output(t, "-o", t->out ? t->out : "-", 0);
+	tool_output(t, "--png", t->png, 1);
+	tool_usage_check(t);
+	return 0;
+}
 
-	tool_fft_setup(&t);
-	effort = tool_fft_effort(&t, p->nx, p->ny, 1);
+/* The surface made, timed, written (and previewed). */
+static void
+generate(struct run *r)
+{
+	struct tool *t = &r->t;
+	const rc_synth_params *p = &r->o.p;
+	enum rc_fft_effort effort;
+	double plan_seconds, seconds;
+	rc_err err;
+	rc_grid *g;
+
+	tool_fft_setup(t);
+	effort = tool_fft_effort(t, p->nx, p->ny, 1);
 	seconds = rc_clock();
 	if ((g = rc_synth_planned(p, effort, &plan_seconds, &err)) == NULL)
-		tool_fail(&t, "%s", err.msg);
+		tool_fail(t, "%s", err.msg);
 	seconds = rc_clock() - seconds;
-	memcpy(g->unit, like_unit, sizeof(g->unit));
+	memcpy(g->unit, r->like_unit, sizeof(g->unit));
 	/* Planning time is worth a line only when it was asked for. */
-	if (!t.quiet && (effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT))
-		tool_warn(&t, "FFT plan %zux%zu (%s): %.3g s; synthesis: %.3g s",
+	if (!t->quiet && (effort == RC_FFT_MEASURE || effort == RC_FFT_PATIENT))
+		tool_warn(t, "FFT plan %zux%zu (%s): %.3g s; synthesis: %.3g s",
 		    p->nx, p->ny, rc_fft_effort_name(effort), plan_seconds,
 		    seconds - plan_seconds);
-	tool_fft_finish(&t);
-	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
-		tool_fail_at(&t, t.png, err.msg);
-	tool_write_grid(&t, g, t.out);
+	tool_fft_finish(t);
+	if (t->png != NULL && rc_png_write(g, t->png, NULL, &err) != 0)
+		tool_fail_at(t, t->png, err.msg);
+	tool_write_grid(t, g, t->out);
 	rc_grid_free(g);
-	return tool_exit(&t, 0);
+}
+
+int
+main(int argc, char **argv)
+{
+	struct run r;
+
+	memset(&r, 0, sizeof(r));
+	if (parse_options(&r, argc, argv))
+		return tool_exit(&r.t, 0);
+	generate(&r);
+	return tool_exit(&r.t, 0);
 }

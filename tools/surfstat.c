@@ -248,7 +248,7 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	num(t, &r, "mean", s.mean);
 	num(t, &r, "hrms", s.hrms);
 	num(t, &r, "gbar", gbar);
-	num(t, &r, "gbar_fd", rc_gbar_fd(g));
+	num(t, &r, "gbar_fd", rc_gbar_forward(g));
 	num(t, &r, "rms_laplacian", s.rms_laplacian);
 	num(t, &r, "skewness", s.skewness);
 	num(t, &r, "kurtosis", s.kurtosis);
@@ -576,6 +576,7 @@ choose_table(struct stat_opts *so, enum table table)
 }
 
 /* One option c of getopt_long. */
+/* Long: one case per option, each a few lines; they are read together. */
 static void
 stat_option(struct tool *t, struct stat_opts *so, int c, const char *arg,
     char **argv)

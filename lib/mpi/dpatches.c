@@ -161,6 +161,8 @@ out:
 	return rv;
 }
 
+/* Long: the local labelling, the label exchange with neighbouring ranks
+ * and the global union share the label arrays. */
 int
 rc_mpi_patches(const unsigned char *contact, size_t nx, size_t rows,
     size_t *n_patches, double *sum_sq, rc_err *err)

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
- * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c. */
+ * (lib/mpi/dsolver.h); the iteration itself is lib/solver_fire.c, the
+ * serial library's, running on the distributed operator of delastic.c. */
 #include "mpi/dsolver.h"
 
 #include <math.h>
@@ -9,8 +10,10 @@
 #include <string.h>
 
 #include "contact.h"
+#include "gradient.h"
 #include "kappa.h"
 #include "mpi/decomp.h"
+#include "mpi/delastic.h"
 #include "mpi/dpatches.h"
 #include "mpi/dspectral.h"
 #include "solver_impl.h"
@@ -55,7 +58,7 @@ rc_mpi_solver_new(const double *height, size_t nx, size_t ny, double lx,
 	s->n = n;
 	s->lx = lx;
 	s->ly = ly;
-	if (rc_elastic_init(&s->el, nx, ny, lx, ly, o->modulus,
+	if (rc_mpi_elastic_init(&s->el, nx, ny, lx, ly, o->modulus,
 	    o->fft_effort == RC_FFT_ESTIMATE ? RC_FFT_ESTIMATE : RC_FFT_MEASURE,
 	    err) != 0) {
 		free(s);
@@ -179,33 +182,17 @@ rc_mpi_gbar(rc_solver *s)
 	return sqrt(sum) / (double)e->n;
 }
 
-/* The spectral derivative d (0: x, 1: y, 2: Laplacian) of the indenter,
- * from its spectrum spec0, into out (the rank's rows). */
+/* The spectral derivative d of the indenter (gradient.h), from its
+ * spectrum spec0, into out (the rank's rows). */
 static void
-deriv(rc_solver *s, const fftw_complex *spec0, int d, double *out)
+deriv(rc_solver *s, const fftw_complex *spec0, enum rc_deriv d, double *out)
 {
 	rc_elastic *e = &s->el;
-	size_t rows, j0, alloc, ny = e->fft.ny, i, j;
+	size_t rows, j0, alloc, ny = e->fft.ny;
 
 	rc_mpi_rows(s->nx, ny, &rows, &j0, &alloc);
-	for (j = 0; j < rows; j++) {
-		double qy = rc_wavenumber(j0 + j, ny, s->ly);
-		double dqy = rc_deriv_wavenumber(j0 + j, ny, s->ly);
-
-		for (i = 0; i < e->nxc; i++) {
-			double qx = rc_wavenumber(i, s->nx, s->lx);
-			double complex factor;
-
-			if (d == 0)
-				factor = I * rc_deriv_wavenumber(i, s->nx, s->lx);
-			else if (d == 1)
-				factor = I * dqy;
-			else
-				factor = -(qx * qx + qy * qy);
-			e->fft.spec[j * e->nxc + i] = spec0[j * e->nxc + i] *
-			    (factor / (double)e->n);
-		}
-	}
+	rc_deriv_spectral(e->fft.spec, spec0, d, s->nx, ny, s->lx, s->ly, j0,
+	    rows);
 	rc_elastic_c2r(e, e->fft.spec, out);
 }
 
@@ -272,11 +259,11 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
 	rc_elastic_r2c(e, s->height, e->fft.spec);
 	memcpy(spec0, e->fft.spec, nc * sizeof(fftw_complex));
 	sums[0] = sums[1] = 0;
-	for (int d = 0; d < 3; d++) {
-		deriv(s, spec0, d, f);
+	for (int d = RC_DERIV_X; d <= RC_DERIV_LAPLACIAN; d++) {
+		deriv(s, spec0, (enum rc_deriv)d, f);
 		for (k = 0; k < n; k++)
 			if (s->contact[k]) {
-				if (d < 2)
+				if (d != RC_DERIV_LAPLACIAN)
 					sums[0] += f[k] * f[k];
 				else
 					sums[1] += f[k] * (s->height[k] - hbar);
@@ -287,7 +274,7 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
 	fftw_free(f);
 	st->gbar_c = sqrt(sums[0] / (double)st->n_c);
 	sums[1] = -sums[1] / (double)st->n_c;
-	st->gbar_c_prime = sums[1] >= 0 ? sqrt(fabs(sums[1])) : NAN;
+	st->gbar_c_prime = rc_signed_root(sums[1]);
 	if (modulus > 0 && st->gbar_c > 0)
 		st->kappa_c = rc_kappa(st->a_r, pressure / (modulus * st->gbar_c));
 	return 0;

@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve (MPI build) - gfmd-solve(1) on many ranks: the indenter is
  * read from a .surf file with MPI-IO, each rank solves its rows with the
- * library's FIRE-GFMD (lib/solver_fire.c compiled with -DRC_MPI: FFTW-MPI
- * transforms, Allreduce'd sums), rank 0 writes the table, and the fields
- * go to .surf files with MPI-IO.  Options not listed in usage() are the
- * serial tool's that this build does not have; they are refused. */
+ * library's FIRE-GFMD (lib/solver_fire.c on the distributed operator of
+ * lib/mpi/delastic.c: FFTW-MPI transforms, Allreduce'd sums), rank 0
+ * writes the table (the serial tool's rows and steps, tools/gfmd_row.c),
+ * and the fields go to .surf files with MPI-IO.  Options not listed in
+ * usage() are the serial tool's that this build does not have; they are
+ * refused. */
 #include <getopt.h>
 #include <math.h>
 #include <mpi.h>
@@ -74,225 +76,282 @@ write_field(const struct tool *t, const rc_grid *h, size_t ny,
 	rc_grid_free(g);
 }
 
-int
-main(int argc, char **argv)
+/* Everything one run holds, so that main reads as the run's steps (the
+ * serial tool's struct run without what this build does not have). */
+struct run {
+	struct tool t;
+	struct gfmd_opts o;
+	const char *input;
+	int rank;
+	rc_grid *h;			/* the indenter's header (nx x 1) */
+	size_t ny;			/* its rows */
+	double *height;			/* this rank's rows of it */
+	double gbar;			/* its rms gradient */
+	rc_solver *solver;
+	double plan_seconds;
+	size_t npressures, nunconverged;
+	double last_p, last_p_star;
+	rc_atomic out;			/* rank 0 */
+	rc_table_out table;		/* rank 0 */
+	rc_row row;
+};
+
+/* Options into r->o, checked together, what this build does not have
+ * refused; 1 after --help. */
+static int
+parse_options(struct run *r, int argc, char **argv)
 {
 	static const struct option longopts[] = {
 		GFMD_LONGOPTS,
 		{ NULL, 0, NULL, 0 }
 	};
-	struct tool t;
-	struct gfmd_opts o;
-	rc_solver *solver;
-	rc_grid *h;
-	rc_err err;
-	rc_atomic out;
-	rc_table_out table;
-	rc_row row;
-	double *height, gbar = 0, last_p = 0, last_p_star = 0, plan_seconds;
-	size_t npressures, nunconverged = 0, ny;
-	size_t rows, j0, alloc;
-	int c, rank, status = 0;
+	struct tool *t = &r->t;
+	struct gfmd_opts *o = &r->o;
+	int c;
 
-	mpitool_init(&argc, &argv);
-	rank = rc_mpi_rank();
-	tool_init(&t, "gfmd-solve", argc, argv);
-	t.pretty_on_terminal = 0;
-	gfmd_opts_init(&o);
+	tool_init(t, "gfmd-solve", argc, argv);
+	t->pretty_on_terminal = 0;
+	gfmd_opts_init(o);
 	opterr = 0;
 	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
 		if (c == 'h') {
 			usage();
-			return tool_exit(&t, 0);
+			return 1;
 		}
-		gfmd_option(&t, &o, c, optarg, argv);
+		gfmd_option(t, o, c, optarg, argv);
 	}
-	gfmd_opts_check(&t, &o, argc, argv);
+	gfmd_opts_check(t, o, argc, argv);
 	/* What this build does not have is refused, never ignored. */
-	if (o.so.method != RC_METHOD_FIRE)
-		tool_bad(&t, "--method %s: the MPI build has FIRE only (--method "
+	if (o->so.method != RC_METHOD_FIRE)
+		tool_bad(t, "--method %s: the MPI build has FIRE only (--method "
 		    "fire; use the serial gfmd-solve for cg)",
-		    rc_method_name(o.so.method));
-	if (o.given_layer)
-		tool_bad(&t, "--thickness: not in the MPI build (an elastic "
+		    rc_method_name(o->so.method));
+	if (o->given_layer)
+		tool_bad(t, "--thickness: not in the MPI build (an elastic "
 		    "layer is solved by the serial gfmd-solve)");
-	if (o.so.kernel != RC_KERNEL_CONTINUUM)
-		tool_bad(&t, "--kernel %s: not in the MPI build (the pixel "
+	if (o->so.kernel != RC_KERNEL_CONTINUUM)
+		tool_bad(t, "--kernel %s: not in the MPI build (the pixel "
 		    "kernel is solved by the serial gfmd-solve)",
-		    rc_kernel_name(o.so.kernel));
-	if (o.given_hardness)
-		tool_bad(&t, "--hardness: not in the MPI build (perfect "
+		    rc_kernel_name(o->so.kernel));
+	if (o->given_hardness)
+		tool_bad(t, "--hardness: not in the MPI build (perfect "
 		    "plasticity needs the serial gfmd-solve with --method cg)");
-	if (o.given_adhesion)
-		tool_bad(&t, "--adhesion: not in the MPI build (adhesion is "
+	if (o->given_adhesion)
+		tool_bad(t, "--adhesion: not in the MPI build (adhesion is "
 		    "solved by the serial gfmd-solve)");
-	if (o.boundary == RC_BOUNDARY_FREE || o.napproach)
-		tool_bad(&t, "--boundary free, --approach: not in the MPI build "
+	if (o->boundary == RC_BOUNDARY_FREE || o->napproach)
+		tool_bad(t, "--boundary free, --approach: not in the MPI build "
 		    "(periodic boundaries under load control only; use the serial "
 		    "gfmd-solve)");
-	if (o.fd || o.ck_path != NULL || o.ck_every > 0 || o.resume_path != NULL ||
-	    t.png != NULL || t.have_l)
-		tool_bad(&t, "--fd, --checkpoint, --checkpoint-every, --resume, "
+	if (o->fd || o->ck_path != NULL || o->ck_every > 0 ||
+	    o->resume_path != NULL || t->png != NULL || t->have_l)
+		tool_bad(t, "--fd, --checkpoint, --checkpoint-every, --resume, "
 		    "--png, -L: not in the MPI build (use the serial gfmd-solve)");
 	if (argc - optind != 1)
-		tool_bad(&t, "give one input FILE.surf (the MPI build reads no "
+		tool_bad(t, "give one input FILE.surf (the MPI build reads no "
 		    "standard input)");
 	else
-		mpitool_check_surf(&t, "input", argv[optind]);
-	if (o.init != NULL)
-		mpitool_check_surf(&t, "--init", o.init);
+		mpitool_check_surf(t, "input", argv[optind]);
+	if (o->init != NULL)
+		mpitool_check_surf(t, "--init", o->init);
 	for (int k = 0; k < GFMD_NFIELDS; k++)
-		if (o.field[k] != NULL)
-			mpitool_check_surf(&t, gfmd_field_option[k], o.field[k]);
-	tool_usage_check(&t);
-	npressures = o.nreduced ? o.nreduced : o.nabsolute;
-	mpitool_threads(&t);
+		if (o->field[k] != NULL)
+			mpitool_check_surf(t, gfmd_field_option[k], o->field[k]);
+	tool_usage_check(t);
+	r->input = argv[optind];
+	r->npressures = o->nreduced ? o->nreduced : o->nabsolute;
+	return 0;
+}
 
-	if ((h = rc_mpi_surf_read(argv[optind], &ny, &height, &err)) == NULL)
-		tool_fail_at(&t, argv[optind], err.msg);
-	if (!h->periodic && o.boundary != RC_BOUNDARY_PERIODIC)
-		tool_fail(&t, "%s: a finite patch (not periodic) needs free "
+/* The indenter's rows read, the solver planned and timed (the slowest
+ * rank's), the rms gradient gbar (the unit of p*) checked. */
+static void
+solver_setup(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
+
+	if ((r->h = rc_mpi_surf_read(r->input, &r->ny, &r->height, &err)) == NULL)
+		tool_fail_at(&r->t, r->input, err.msg);
+	if (!r->h->periodic && o->boundary != RC_BOUNDARY_PERIODIC)
+		tool_fail(&r->t, "%s: a finite patch (not periodic) needs free "
 		    "boundaries, which the MPI build does not have (use the serial "
 		    "gfmd-solve, or --boundary periodic to treat it as one period)",
-		    argv[optind]);
-	o.so.modulus = o.modulus;
+		    r->input);
+	o->so.modulus = o->modulus;
 	/* The serial policy (fft.h): big grids are worth FFTW_MEASURE over the
 	 * hundreds of transform pairs of a solve. */
-	o.so.fft_effort = rc_fft_effort_auto(h->nx, ny, RC_FFT_MEASURE_PAIRS) ==
-	    RC_FFT_MEASURE ? RC_FFT_MEASURE : RC_FFT_ESTIMATE;
-	plan_seconds = MPI_Wtime();
-	if ((solver = rc_mpi_solver_new(height, h->nx, ny, h->lx, h->ly, &o.so,
-	    &err)) == NULL)
-		tool_fail(&t, "%s", err.msg);
-	plan_seconds = MPI_Wtime() - plan_seconds;
-	rc_mpi_max(&plan_seconds, 1);
-	rc_mpi_rows(h->nx, ny, &rows, &j0, &alloc);
-	gbar = rc_mpi_gbar(solver);
-	gfmd_check_scale(&t, argv[optind], NAN, gbar);
-	if (o.nreduced && !(gbar > 0))
-		tool_fail(&t, "%s: the indenter is flat (rms gradient 0), so the "
+	o->so.fft_effort = rc_fft_effort_auto(r->h->nx, r->ny,
+	    RC_FFT_MEASURE_PAIRS) == RC_FFT_MEASURE ? RC_FFT_MEASURE :
+	    RC_FFT_ESTIMATE;
+	r->plan_seconds = MPI_Wtime();
+	if ((r->solver = rc_mpi_solver_new(r->height, r->h->nx, r->ny,
+	    r->h->lx, r->h->ly, &o->so, &err)) == NULL)
+		tool_fail(&r->t, "%s", err.msg);
+	r->plan_seconds = MPI_Wtime() - r->plan_seconds;
+	rc_mpi_max(&r->plan_seconds, 1);
+	r->gbar = rc_mpi_gbar(r->solver);
+	gfmd_check_scale(&r->t, r->input, NAN, r->gbar);
+	if (o->nreduced && !(r->gbar > 0))
+		tool_fail(&r->t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
-		    argv[optind]);
-	if (o.init != NULL) {
-		size_t init_ny;
-		double *u;
-		rc_grid *uh = rc_mpi_surf_read(o.init, &init_ny, &u, &err);
+		    r->input);
+}
 
-		if (uh == NULL)
-			tool_fail_at(&t, o.init, err.msg);
-		if (uh->nx != h->nx || init_ny != ny)
-			tool_fail(&t, "%s: %zux%zu grid, the indenter is %zux%zu", o.init,
-			    uh->nx, init_ny, h->nx, ny);
-		if (rc_solver_set_displacement(solver, u, &err) != 0)
-			status = -1;
-		{
-			double bad = status != 0;
+/* --init: start from this elastic surface height (every rank its rows). */
+static void
+initial_displacement(struct run *r)
+{
+	const char *path = r->o.init;
+	size_t init_ny;
+	double *u, bad;
+	rc_err err;
+	rc_grid *uh;
 
-			rc_mpi_max(&bad, 1);
-			if (bad)
-				tool_fail(&t, "%s: an initial displacement is not finite",
-				    o.init);
-		}
-		fftw_free(u);
-		rc_grid_free(uh);
+	if (path == NULL)
+		return;
+	if ((uh = rc_mpi_surf_read(path, &init_ny, &u, &err)) == NULL)
+		tool_fail_at(&r->t, path, err.msg);
+	if (uh->nx != r->h->nx || init_ny != r->ny)
+		tool_fail(&r->t, "%s: %zux%zu grid, the indenter is %zux%zu", path,
+		    uh->nx, init_ny, r->h->nx, r->ny);
+	bad = rc_solver_set_displacement(r->solver, u, &err) != 0;
+	rc_mpi_max(&bad, 1);
+	if (bad)
+		tool_fail(&r->t, "%s: an initial displacement is not finite", path);
+	fftw_free(u);
+	rc_grid_free(uh);
+}
+
+/* Solve pressure k and write its row (rank 0). */
+static void
+solve_pressure(struct run *r, size_t k)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_solve_result res;
+	rc_contact_stats st;
+	double p, p_star, seconds, t0 = MPI_Wtime();
+	rc_err err;
+	int w;
+
+	gfmd_pressure(o, k, r->gbar, &p, &p_star);
+	if (rc_solver_solve(r->solver, p, &res, &err) < 0)
+		tool_fail(&r->t, "p = %g: %s", p, err.msg);
+	/* The slowest rank's wall time is the run's. */
+	seconds = MPI_Wtime() - t0;
+	rc_mpi_max(&seconds, 1);
+	if (rc_mpi_contact_analyse(r->solver, o->alpha, p, &r->gbar, &st,
+	    &err) != 0)
+		tool_fail(&r->t, "p = %g: %s", p, err.msg);
+	{
+		struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = r->gbar,
+		    .stats = &st, .mean_gap = rc_solver_mean_gap(r->solver),
+		    .a_subpixel = NAN,
+		    .elastic_energy = rc_solver_elastic_energy(r->solver),
+		    .iterations = res.iterations, .residual = res.residual,
+		    .tol = o->so.tol,
+		    .seconds = seconds, .plan_seconds = r->plan_seconds,
+		    .method = "fire", .boundary = "periodic",
+		    .approach = rc_solver_approach(r->solver),
+		    .hardness = 0, .a_plastic = 0,
+		    .indenter = r->h, .nx = r->h->nx, .ny = r->ny };
+
+		w = gfmd_emit_row(&r->t, &in, res.converged, &r->row, &r->table,
+		    r->rank == 0 ? r->out.fp : NULL, &r->nunconverged, &err);
 	}
-	if (rank == 0 && rc_atomic_open(&out, t.out, &err) != 0)
-		fail0(&t, &out, t.out, err.msg);
-	if (rank == 0)
-		tool_table_begin(&t, &table, out.fp);
-	rc_row_init(&row);
-	for (size_t k = 0; k < npressures; k++) {
-		rc_solve_result res;
-		rc_contact_stats st;
-		double p = o.nreduced ? o.reduced[k] * o.modulus * gbar : o.absolute[k];
-		double p_star = o.nreduced ? o.reduced[k] :
-		    gbar > 0 ? p / (o.modulus * gbar) : NAN, mean_gap, seconds;
-		double t0 = MPI_Wtime();
-		int r;
+	if (w == GFMD_ROW_NOMEM)
+		tool_fail(&r->t, "out of memory");
+	if (w != 0)
+		fail0(&r->t, &r->out, r->t.out ? r->t.out : "standard output",
+		    "write failed");
+	r->last_p = p;
+	r->last_p_star = p_star;
+}
 
-		r = rc_solver_solve(solver, p, &res, &err);
-		if (r < 0)
-			tool_fail(&t, "p = %g: %s", p, err.msg);
-		/* The slowest rank's wall time is the run's. */
-		seconds = MPI_Wtime() - t0;
-		rc_mpi_max(&seconds, 1);
-		if (rc_mpi_contact_analyse(solver, o.alpha, p, &gbar, &st, &err) != 0)
-			tool_fail(&t, "p = %g: %s", p, err.msg);
-		mean_gap = rc_solver_mean_gap(solver);
-		{
-			struct gfmd_row in = { .p_star = p_star, .p = p, .gbar = gbar,
-			    .stats = &st, .mean_gap = mean_gap, .a_subpixel = NAN,
-			    .elastic_energy = rc_solver_elastic_energy(solver),
-			    .iterations = res.iterations, .residual = res.residual,
-			    .tol = o.so.tol,
-			    .seconds = seconds, .plan_seconds = plan_seconds,
-			    .method = "fire", .boundary = "periodic",
-			    .approach = rc_solver_approach(solver),
-			    .hardness = 0, .a_plastic = 0,
-			    .indenter = h, .nx = h->nx, .ny = ny };
+/* Fields of the last pressure, only those asked for. */
+static void
+write_fields(struct run *r)
+{
+	const struct gfmd_opts *o = &r->o;
+	const rc_grid *h = r->h;
+	rc_solver *solver = r->solver;
+	size_t rows, j0, alloc;
 
-			const char *why = gfmd_kappa_c_why(&in);
-
-			if (why != NULL && rank == 0)
-				tool_warn(&t, "p = %g: kappa_c written as nan: %s", p,
-				    why);
-			if (gfmd_result_row(&row, &in) != 0)
-				tool_fail(&t, "out of memory");
-		}
-		if (rank == 0 && (rc_table_write(&table, &row, &err) != 0 ||
-		    fflush(out.fp) != 0))
-			fail0(&t, &out, t.out ? t.out : "standard output",
-			    "write failed");
-		if (!res.converged) {
-			nunconverged++;
-			tool_warn(&t, "p = %g: not converged after %ld iterations "
-			    "(residual %.3g, tolerance %.3g); row written, going on",
-			    p, res.iterations, res.residual, o.so.tol);
-		}
-		last_p = p;
-		last_p_star = p_star;
-	}
-	rc_row_free(&row);
-	if (rank == 0 && (rc_table_end(&table, &err) != 0 ||
-	    rc_atomic_commit(&out, &err) != 0))
-		fail0(&t, &out, t.out ? t.out : "standard output", err.msg);
-
-	/* Fields of the last pressure, only those asked for. */
-	if (o.field[GFMD_CONTACT] != NULL || o.field[GFMD_GAP] != NULL) {
+	rc_mpi_rows(h->nx, r->ny, &rows, &j0, &alloc);
+	if (o->field[GFMD_CONTACT] != NULL || o->field[GFMD_GAP] != NULL) {
 		const double *u = rc_solver_displacement(solver);
 		const unsigned char *mask = rc_solver_contact(solver);
 		double *f = malloc((rows * h->nx + 1) * sizeof(double));
 
 		if (f == NULL)
-			tool_fail(&t, "out of memory");
-		if (o.field[GFMD_CONTACT] != NULL) {
+			tool_fail(&r->t, "out of memory");
+		if (o->field[GFMD_CONTACT] != NULL) {
 			for (size_t k = 0; k < rows * h->nx; k++)
 				f[k] = mask[k] != 0;
-			write_field(&t, h, ny, RC_KIND_MASK, last_p, last_p_star,
-			    o.modulus, f, o.field[GFMD_CONTACT]);
+			write_field(&r->t, h, r->ny, RC_KIND_MASK, r->last_p,
+			    r->last_p_star, o->modulus, f, o->field[GFMD_CONTACT]);
 		}
-		if (o.field[GFMD_GAP] != NULL) {
+		if (o->field[GFMD_GAP] != NULL) {
 			for (size_t k = 0; k < rows * h->nx; k++)
-				f[k] = u[k] - height[k];
-			write_field(&t, h, ny, RC_KIND_GAP, last_p, last_p_star,
-			    o.modulus, f, o.field[GFMD_GAP]);
+				f[k] = u[k] - r->height[k];
+			write_field(&r->t, h, r->ny, RC_KIND_GAP, r->last_p,
+			    r->last_p_star, o->modulus, f, o->field[GFMD_GAP]);
 		}
 		free(f);
 	}
-	if (o.field[GFMD_PRESSURE] != NULL)
-		write_field(&t, h, ny, RC_KIND_PRESSURE, last_p, last_p_star, o.modulus,
-		    rc_solver_pressure(solver), o.field[GFMD_PRESSURE]);
-	if (o.field[GFMD_DISPLACEMENT] != NULL)
-		write_field(&t, h, ny, RC_KIND_DISPLACEMENT, last_p, last_p_star,
-		    o.modulus, rc_solver_displacement(solver), o.field[GFMD_DISPLACEMENT]);
-	if (nunconverged) {
-		tool_warn(&t, "%zu of %zu pressures did not converge", nunconverged,
-		    npressures);
+	if (o->field[GFMD_PRESSURE] != NULL)
+		write_field(&r->t, h, r->ny, RC_KIND_PRESSURE, r->last_p,
+		    r->last_p_star, o->modulus, rc_solver_pressure(solver),
+		    o->field[GFMD_PRESSURE]);
+	if (o->field[GFMD_DISPLACEMENT] != NULL)
+		write_field(&r->t, h, r->ny, RC_KIND_DISPLACEMENT, r->last_p,
+		    r->last_p_star, o->modulus, rc_solver_displacement(solver),
+		    o->field[GFMD_DISPLACEMENT]);
+}
+
+/* The exit status (1 if a pressure did not converge); everything freed. */
+static int
+finish(struct run *r)
+{
+	int status = 0;
+
+	if (r->nunconverged) {
+		tool_warn(&r->t, "%zu of %zu pressures did not converge",
+		    r->nunconverged, r->npressures);
 		status = 1;
 	}
-	rc_solver_free(solver);
-	fftw_free(height);
-	rc_grid_free(h);
-	gfmd_opts_free(&o);
-	return tool_exit(&t, status);
+	rc_solver_free(r->solver);
+	fftw_free(r->height);
+	rc_grid_free(r->h);
+	gfmd_opts_free(&r->o);
+	return tool_exit(&r->t, status);
+}
+
+int
+main(int argc, char **argv)
+{
+	struct run r;
+	rc_err err;
+
+	memset(&r, 0, sizeof(r));
+	mpitool_init(&argc, &argv);
+	r.rank = rc_mpi_rank();
+	if (parse_options(&r, argc, argv))
+		return tool_exit(&r.t, 0);
+	mpitool_threads(&r.t);
+	solver_setup(&r);
+	initial_displacement(&r);
+	if (r.rank == 0 && rc_atomic_open(&r.out, r.t.out, &err) != 0)
+		fail0(&r.t, &r.out, r.t.out, err.msg);
+	if (r.rank == 0)
+		tool_table_begin(&r.t, &r.table, r.out.fp);
+	rc_row_init(&r.row);
+	for (size_t k = 0; k < r.npressures; k++)
+		solve_pressure(&r, k);
+	rc_row_free(&r.row);
+	if (r.rank == 0 && (rc_table_end(&r.table, &err) != 0 ||
+	    rc_atomic_commit(&r.out, &err) != 0))
+		fail0(&r.t, &r.out, r.t.out ? r.t.out : "standard output", err.msg);
+	write_fields(&r);
+	return finish(&r);
 }
