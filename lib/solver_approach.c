@@ -85,6 +85,8 @@ adhesive_approach(rc_solver *s, double delta, double *pressure,
 	return r;
 }
 
+/* Long: the full-contact check, the bracket and the Illinois steps share
+ * the trial state and its early exits. */
 int
 rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err)

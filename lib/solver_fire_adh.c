@@ -221,6 +221,9 @@ adh_finish(rc_solver *s, const rc_adhesion *law, double p)
 	s->a_attr = (double)attr / (double)n;
 }
 
+/* Long: one FIRE iteration's passes share their sums, and load and
+ * displacement control differ inside them (the mean mode, the separation
+ * test), not around them. */
 int
 rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
     rc_solve_result *res, rc_err *err)

@@ -77,6 +77,8 @@ initial_pressure(rc_solver *s, double p)
 	rc__sigma_to_load(s, p);
 }
 
+/* Long: the FIRE iteration on pressures, its passes sharing their sums
+ * as in solver_fire.c. */
 int
 rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
