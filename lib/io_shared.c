@@ -433,6 +433,18 @@ rc__put_le16(unsigned char *p, uint16_t v)
 	p[1] = (unsigned char)(v >> 8);
 }
 
+double
+rc__get_le64(const unsigned char *p)
+{
+	uint64_t u = 0;
+	double d;
+
+	for (int k = 7; k >= 0; k--)
+		u = u << 8 | p[k];
+	memcpy(&d, &u, 8);
+	return d;
+}
+
 uint32_t
 rc__get_le32(const unsigned char *p)
 {
