@@ -32,8 +32,6 @@ rc_contact_count(const unsigned char *contact, size_t n)
 	return n_c;
 }
 
-/* On an axis of length 1 the periodic neighbour is the point itself, which
- * is in contact, so line grids need no special case. */
 /* (1 - f)^(3/2) / f^(1/2) = r for f in (0, 1): decreasing from +inf to 0;
  * bisection to 2^-50. */
 static double
@@ -116,8 +114,13 @@ rc_contact_subpixel(const double *u, const double *h, const double *sigma,
 	    (bonds_x + bonds_y)) / (double)n;
 }
 
-size_t
-rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
+/* Contact points with a neighbour out of contact; without periodic a
+ * point on the edge of the patch counts too, and the wrapped neighbours
+ * are then read only where they are the plain ones.  On a periodic axis
+ * of length 1 the neighbour is the point itself, which is in contact, so
+ * line grids need no special case. */
+static size_t
+line(const unsigned char *contact, size_t nx, size_t ny, int periodic)
 {
 	size_t n_cl = 0;
 
@@ -131,28 +134,25 @@ rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
 				continue;
 			size_t left = i > 0 ? i - 1 : nx - 1;
 			size_t right = i + 1 < nx ? i + 1 : 0;
-			n_cl += !row[left] || !row[right] || !up[i] || !down[i];
+			int edge = !periodic && (i == 0 || i + 1 == nx || j == 0 ||
+			    j + 1 == ny);
+			n_cl += edge || !row[left] || !row[right] || !up[i] ||
+			    !down[i];
 		}
 	}
 	return n_cl;
 }
 
 size_t
+rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
+{
+	return line(contact, nx, ny, 1);
+}
+
+size_t
 rc_contact_line_open(const unsigned char *contact, size_t nx, size_t ny)
 {
-	size_t n_cl = 0;
-
-	#pragma omp parallel for reduction(+:n_cl) schedule(static)
-	for (size_t j = 0; j < ny; j++) {
-		const unsigned char *row = contact + j * nx;
-		for (size_t i = 0; i < nx; i++) {
-			if (!row[i])
-				continue;
-			n_cl += i == 0 || i + 1 == nx || j == 0 || j + 1 == ny ||
-			    !row[i - 1] || !row[i + 1] || !row[i - nx] || !row[i + nx];
-		}
-	}
-	return n_cl;
+	return line(contact, nx, ny, 0);
 }
 
 /* The mean height over the contact; rows are summed first so round-off
