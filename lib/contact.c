@@ -32,8 +32,6 @@ rc_contact_count(const unsigned char *contact, size_t n)
 	return n_c;
 }
 
-/* On an axis of length 1 the periodic neighbour is the point itself, which
- * is in contact, so line grids need no special case. */
 /* (1 - f)^(3/2) / f^(1/2) = r for f in (0, 1): decreasing from +inf to 0;
  * bisection to 2^-50. */
 static double
@@ -116,8 +114,13 @@ rc_contact_subpixel(const double *u, const double *h, const double *sigma,
 	    (bonds_x + bonds_y)) / (double)n;
 }
 
-size_t
-rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
+/* Contact points with a neighbour out of contact; without periodic a
+ * point on the edge of the patch counts too, and the wrapped neighbours
+ * are then read only where they are the plain ones.  On a periodic axis
+ * of length 1 the neighbour is the point itself, which is in contact, so
+ * line grids need no special case. */
+static size_t
+line(const unsigned char *contact, size_t nx, size_t ny, int periodic)
 {
 	size_t n_cl = 0;
 
@@ -131,35 +134,32 @@ rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
 				continue;
 			size_t left = i > 0 ? i - 1 : nx - 1;
 			size_t right = i + 1 < nx ? i + 1 : 0;
-			n_cl += !row[left] || !row[right] || !up[i] || !down[i];
+			int edge = !periodic && (i == 0 || i + 1 == nx || j == 0 ||
+			    j + 1 == ny);
+			n_cl += edge || !row[left] || !row[right] || !up[i] ||
+			    !down[i];
 		}
 	}
 	return n_cl;
 }
 
 size_t
+rc_contact_line(const unsigned char *contact, size_t nx, size_t ny)
+{
+	return line(contact, nx, ny, 1);
+}
+
+size_t
 rc_contact_line_open(const unsigned char *contact, size_t nx, size_t ny)
 {
-	size_t n_cl = 0;
-
-	#pragma omp parallel for reduction(+:n_cl) schedule(static)
-	for (size_t j = 0; j < ny; j++) {
-		const unsigned char *row = contact + j * nx;
-		for (size_t i = 0; i < nx; i++) {
-			if (!row[i])
-				continue;
-			n_cl += i == 0 || i + 1 == nx || j == 0 || j + 1 == ny ||
-			    !row[i - 1] || !row[i + 1] || !row[i - nx] || !row[i + nx];
-		}
-	}
-	return n_cl;
+	return line(contact, nx, ny, 0);
 }
 
-/* Masked sums of fft->real (squared or times (h - hbar_c)); rows are summed
- * first so round-off grows with nx + ny rather than nx * ny. */
+/* The mean height over the contact; rows are summed first so round-off
+ * grows with nx + ny rather than nx * ny. */
 static double
-masked_sum_sq(const double *f, const unsigned char *contact, size_t nx,
-    size_t ny)
+contact_mean(const double *h, const unsigned char *contact, size_t nx,
+    size_t ny, size_t n_c)
 {
 	double sum = 0;
 
@@ -168,66 +168,59 @@ masked_sum_sq(const double *f, const unsigned char *contact, size_t nx,
 		double row = 0;
 		for (size_t i = j * nx; i < (j + 1) * nx; i++)
 			if (contact[i])
-				row += f[i] * f[i];
+				row += h[i];
 		sum += row;
 	}
-	return sum;
+	return sum / (double)n_c;
 }
 
-static double
-masked_sum_dh(const double *f, const double *h, double hbar,
-    const unsigned char *contact, size_t nx, size_t ny)
+/* The sums of rc_field_sums from spectral fields, one at a time in the
+ * plan's buffer. */
+static int
+spectral_sums(const rc_grid *h, const unsigned char *contact, double hbar,
+    rc_fft *fft, double *grad2, double *dh_lap, rc_err *err)
 {
-	double sum = 0;
+	rc_fft own;
+	int rv = -1;
 
-	#pragma omp parallel for reduction(+:sum) schedule(static)
-	for (size_t j = 0; j < ny; j++) {
-		double row = 0;
-		for (size_t i = j * nx; i < (j + 1) * nx; i++)
-			if (contact[i])
-				row += (f != NULL ? f[i] : 1) * (h[i] - hbar);
-		sum += row;
+	if ((fft = rc_fft_borrow(fft, &own, h->nx, h->ny, err)) == NULL)
+		return -1;
+	*grad2 = *dh_lap = 0;
+	for (int d = RC_DERIV_X; d <= RC_DERIV_LAPLACIAN; d++) {
+		const double *f = fft->real;
+		double g, l;
+
+		if (rc_spectral_deriv(h, fft, (enum rc_deriv)d, err) != 0)
+			goto out;
+		rc_field_sums(h->z, d == RC_DERIV_X ? f : NULL,
+		    d == RC_DERIV_Y ? f : NULL, d == RC_DERIV_LAPLACIAN ? f : NULL,
+		    contact, rc_grid_size(h), hbar, &g, &l);
+		*grad2 += g;
+		*dh_lap += l;
 	}
-	return sum;
+	rv = 0;
+out:
+	if (fft == &own)
+		rc_fft_free(&own);
+	return rv;
 }
 
 static int
 gradients(const rc_grid *h, const unsigned char *contact, size_t n_c,
     rc_fft *fft, int fd, int nonperiodic, rc_contact_stats *st, rc_err *err)
 {
-	rc_fft own;
-	size_t nx = h->nx, ny = h->ny;
-	double hbar, sum, dh_lap;
-	int rv = -1;
+	double hbar, grad2, dh_lap;
 
 	if (n_c == 0)
 		return 0;	/* NaN: no contact to average over */
-	hbar = masked_sum_dh(NULL, h->z, 0, contact, nx, ny) / (double)n_c;
-	if (fd || nonperiodic) {
-		rc_deriv_sums(h, contact, hbar, nonperiodic, &sum, &dh_lap);
-		st->gbar_c = sqrt(sum / (double)n_c);
-		sum = -dh_lap / (double)n_c;
-		st->gbar_c_prime = rc_signed_root(sum);
-		return 0;
-	}
-	if ((fft = rc_fft_borrow(fft, &own, nx, ny, err)) == NULL)
+	hbar = contact_mean(h->z, contact, h->nx, h->ny, n_c);
+	if (fd || nonperiodic)
+		rc_deriv_sums(h, contact, hbar, nonperiodic, &grad2, &dh_lap);
+	else if (spectral_sums(h, contact, hbar, fft, &grad2, &dh_lap, err) != 0)
 		return -1;
-	if (rc_spectral_deriv(h, fft, RC_DERIV_X, err) != 0)
-		goto out;
-	sum = masked_sum_sq(fft->real, contact, nx, ny);
-	if (rc_spectral_deriv(h, fft, RC_DERIV_Y, err) != 0)
-		goto out;
-	sum += masked_sum_sq(fft->real, contact, nx, ny);
-	st->gbar_c = sqrt(sum / (double)n_c);
-	if (rc_spectral_deriv(h, fft, RC_DERIV_LAPLACIAN, err) != 0)
-		goto out;
-	sum = -masked_sum_dh(fft->real, h->z, hbar, contact, nx, ny) / (double)n_c;
-	st->gbar_c_prime = rc_signed_root(sum);
-	rv = 0;
-out:
-	if (fft == &own)
-		rc_fft_free(&own);
-	return rv;
+	st->gbar_c = sqrt(grad2 / (double)n_c);
+	st->gbar_c_prime = rc_signed_root(-dh_lap / (double)n_c);
+	return 0;
 }
 
 int

@@ -123,6 +123,37 @@ rc_deriv_sums(const rc_grid *h, const unsigned char *mask, double hbar,
 	*dh_lap = sum_l;
 }
 
+void
+rc_field_sums(const double *h, const double *hx, const double *hy,
+    const double *lap, const unsigned char *set, size_t n, double hbar,
+    double *grad2, double *dh_lap)
+{
+	double part[NPART][2];
+
+	#pragma omp parallel for schedule(static)
+	for (long p = 0; p < NPART; p++) {
+		double g = 0, l = 0;
+
+		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++) {
+			if (set != NULL && !set[k])
+				continue;
+			if (hx != NULL)
+				g += hx[k] * hx[k];
+			if (hy != NULL)
+				g += hy[k] * hy[k];
+			if (lap != NULL)
+				l += (h[k] - hbar) * lap[k];
+		}
+		part[p][0] = g;
+		part[p][1] = l;
+	}
+	*grad2 = *dh_lap = 0;
+	for (int p = 0; p < NPART; p++) {
+		*grad2 += part[p][0];
+		*dh_lap += part[p][1];
+	}
+}
+
 double
 rc_gbar_central(const rc_grid *g)
 {

@@ -94,6 +94,18 @@ rc_deriv_forward(double here, double next, int e, double d)
 void rc_deriv_sums(const rc_grid *h, const unsigned char *mask, double hbar,
     int open, double *grad2, double *dh_lap);
 
+/* From derivative fields already computed (any stencil), over the points
+ * k < n of set (set[k] != 0; NULL: every point): the sum of hx^2 + hy^2
+ * into *grad2 and of (h - hbar) lap into *dh_lap; a NULL field adds
+ * nothing (the spectral path has one field at a time).  The sums of
+ * gbar_c and gbar_c_prime for gfmd-solve (contact.c; lib/mpi/dsolver.c,
+ * each rank its rows) and surfstat (stats.c), in fixed parts added in
+ * order: the same digits for any thread count.  The stencil paths without
+ * fields (gfmd-solve --fd, free boundaries) are rc_deriv_sums. */
+void rc_field_sums(const double *h, const double *hx, const double *hy,
+    const double *lap, const unsigned char *set, size_t n, double hbar,
+    double *grad2, double *dh_lap);
+
 /* Eq. 9's (gbar_c')^2 = x = -<dh lap h>_c can be negative over a partial
  * contact (dh about the contact mean): gbar_c_prime (gfmd-solve, serial
  * and MPI, and surfstat with a mask) is its signed square root,

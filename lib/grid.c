@@ -59,27 +59,20 @@ rc_grid *
 rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
 	rc_grid *g;
+	double *z;
 	size_t n;
 
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		return NULL;
 	n = nx * ny;
-	if ((g = rc_calloc(1, sizeof(*g), err)) == NULL)
-		return NULL;
-	g->nx = nx;
-	g->ny = ny;
-	g->lx = lx;
-	g->ly = ly;
-	g->kind = RC_KIND_HEIGHT;
-	g->periodic = 1;
-	g->z = fftw_alloc_real(n);
-	if (g->z == NULL) {
+	if ((z = fftw_alloc_real(n)) == NULL) {
 		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
 		    n * sizeof(double), nx, ny);
-		free(g);
 		return NULL;
 	}
-	memset(g->z, 0, n * sizeof(double));
+	memset(z, 0, n * sizeof(double));
+	if ((g = rc_grid_adopt(nx, ny, lx, ly, z, err)) == NULL)
+		fftw_free(z);
 	return g;
 }
 

@@ -77,18 +77,6 @@ get_u32(struct cur *c, uint32_t *v, rc_err *err)
 	return 0;
 }
 
-static double
-le64(const unsigned char *p)
-{
-	uint64_t u = 0;
-	double d;
-
-	for (int k = 7; k >= 0; k--)
-		u = u << 8 | p[k];
-	memcpy(&d, &u, 8);
-	return d;
-}
-
 /* An object's header: *type its type name, *body its components; c moves
  * past the object. */
 static int
@@ -218,7 +206,7 @@ read_field(struct cur *c, struct field *f, rc_err *err)
 		    && t == 'd') {
 			if (left(&body) < 8)
 				return bad(err, "truncated");
-			*(name[0] == 'x' ? &f->xreal : &f->yreal) = le64(body.p);
+			*(name[0] == 'x' ? &f->xreal : &f->yreal) = rc__get_le64(body.p);
 			body.p += 8;
 		} else if (strcmp(name, "si_unit_xy") == 0 && t == 'o') {
 			if (read_unit(&body, f->unit_xy, err) != 0)
@@ -314,7 +302,7 @@ make_channel(const struct entry *e, rc_chanset *s, rc_err *err)
 	    NULL)
 		return -1;
 	for (size_t k = 0; k < n; k++)
-		g->z[k] = le64(f->data + 8 * k);
+		g->z[k] = rc__get_le64(f->data + 8 * k);
 	strcpy(g->unit, f->unit_xy);
 	strcpy(g->z_unit, f->unit_z);
 	g->periodic = 0;	/* a measurement */
@@ -324,7 +312,7 @@ make_channel(const struct entry *e, rc_chanset *s, rc_err *err)
 			return -1;
 		}
 		for (size_t k = 0; k < n; k++) {
-			g->valid[k] = !(le64(m->data + 8 * k) > 0.5);
+			g->valid[k] = !(rc__get_le64(m->data + 8 * k) > 0.5);
 			if (!g->valid[k])
 				g->z[k] = NAN;
 		}

@@ -79,6 +79,7 @@ void rc__put_le64(unsigned char *p, double v);
 void rc__put_le32f(unsigned char *p, float v);
 void rc__put_le32(unsigned char *p, uint32_t v);
 void rc__put_le16(unsigned char *p, uint16_t v);
+double rc__get_le64(const unsigned char *p);
 uint32_t rc__get_le32(const unsigned char *p);
 uint16_t rc__get_le16(const unsigned char *p);
 /* Write n bytes; -1 with a message on failure. */

@@ -32,18 +32,6 @@ struct hdr {
 
 static const size_t type_size[8] = { 1, 2, 4, 4, 1, 2, 4, 8 };
 
-static double
-le_double(const unsigned char *p)
-{
-	uint64_t u = 0;
-	double d;
-
-	for (int k = 7; k >= 0; k--)
-		u = u << 8 | p[k];
-	memcpy(&d, &u, 8);
-	return d;
-}
-
 /* The value of DataType t at p; *missing set for a missing point. */
 static double
 decode(const unsigned char *p, int t, int *missing)
@@ -72,7 +60,7 @@ decode(const unsigned char *p, int t, int *missing)
 		*missing = rc__get_le32(p) == 0x80000000u;
 		return (int32_t)rc__get_le32(p);
 	default:
-		v = le_double(p);
+		v = rc__get_le64(p);
 		*missing = isnan(v);
 		return v;
 	}
@@ -136,9 +124,9 @@ read_binary(rc_in *in, rc_err *err)
 	}
 	d.nx = rc__get_le16(h + 34);
 	d.ny = rc__get_le16(h + 36);
-	d.xs = le_double(h + 38);
-	d.ys = le_double(h + 46);
-	d.zs = le_double(h + 54);
+	d.xs = rc__get_le64(h + 38);
+	d.ys = rc__get_le64(h + 46);
+	d.zs = rc__get_le64(h + 54);
 	d.compression = h[70];
 	d.type = h[71];
 	if (check_header(&d, err) != 0)

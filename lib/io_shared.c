@@ -242,6 +242,22 @@ check_trailing(rc_in *in, rc_err *err)
 	return 0;
 }
 
+/* Read want bytes into dst, adding the count read to *got and into *r;
+ * -1 with a message when fewer came (need: all the data bytes expected). */
+static int
+read_piece(rc_in *in, void *dst, size_t want, size_t need, size_t *got,
+    size_t *r, rc_err *err)
+{
+	*r = rc__in_read(in, dst, want);
+	*got += *r;
+	if (*r == want)
+		return 0;
+	if (rc__in_check(in, err) == 0)
+		rc_seterr(err, "truncated: expected %zu data bytes, got %zu", need,
+		    *got);
+	return -1;
+}
+
 /* Long: the two ways in (a file of known size, a pipe read piece by
  * piece) share the decoding and the error paths. */
 rc_grid *
@@ -272,17 +288,11 @@ rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 		for (k = 0; got < need; ) {
 			size_t want = need - got < CHUNK ? need - got : CHUNK, r;
 
-			r = rc__in_read(in, buf, want);
+			if (read_piece(in, buf, want, need, &got, &r, err) != 0)
+				goto fail;
 			/* A piece holds whole values: CHUNK is a multiple of 8. */
 			decode(buf, k, r / l->elsize, l, g);
 			k += r / l->elsize;
-			got += r;
-			if (r < want) {
-				if (rc__in_check(in, err) == 0)
-					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
-					    need, got);
-				goto fail;
-			}
 		}
 		free(buf);
 		buf = NULL;
@@ -302,15 +312,11 @@ rc__in_read_values(rc_in *in, size_t nx, size_t ny, double lx, double ly,
 
 			if ((chunk[nchunk] = rc_malloc(want, err)) == NULL)
 				goto fail;
-			r = rc__in_read(in, chunk[nchunk], want);
-			bytes[nchunk++] = r;
-			got += r;
-			if (r < want) {
-				if (rc__in_check(in, err) == 0)
-					rc_seterr(err, "truncated: expected %zu data bytes, got %zu",
-					    need, got);
+			/* counted before the check: fail frees it */
+			if (read_piece(in, chunk[nchunk++], want, need, &got, &r,
+			    err) != 0)
 				goto fail;
-			}
+			bytes[nchunk - 1] = r;
 			if (piece < CHUNK)
 				piece *= 2;
 		}
@@ -431,6 +437,18 @@ rc__put_le16(unsigned char *p, uint16_t v)
 {
 	p[0] = (unsigned char)(v & 0xff);
 	p[1] = (unsigned char)(v >> 8);
+}
+
+double
+rc__get_le64(const unsigned char *p)
+{
+	uint64_t u = 0;
+	double d;
+
+	for (int k = 7; k >= 0; k--)
+		u = u << 8 | p[k];
+	memcpy(&d, &u, 8);
+	return d;
 }
 
 uint32_t

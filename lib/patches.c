@@ -161,9 +161,10 @@ rc_patches_slab(const unsigned char *contact, size_t nx, size_t ny,
 	return slab(contact, nx, ny, 1, u, first, nfirst, last, nlast, err);
 }
 
-/* Patches of a finite patch (free boundaries): no wrap-around. */
-int
-rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
+/* Patches of the whole grid: periodic joins runs across both boundaries,
+ * else (a finite patch, free boundaries) there is no wrap-around. */
+static int
+patches(const unsigned char *contact, size_t nx, size_t ny, int periodic,
     size_t *n_patches, double *sum_sq, rc_err *err)
 {
 	rc_uf u = { NULL, NULL, 0, 0 };
@@ -173,8 +174,12 @@ rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
 
 	if ((ends = rc_calloc(2 * maxruns, sizeof(*ends), err)) == NULL)
 		return -1;
-	if (slab(contact, nx, ny, 0, &u, ends, &nfirst, ends + maxruns, &nlast,
-	    err) == 0) {
+	if (slab(contact, nx, ny, periodic, &u, ends, &nfirst, ends + maxruns,
+	    &nlast, err) == 0) {
+		/* Across the y boundary (a self-join when ny = 1, which is
+		 * harmless). */
+		if (periodic)
+			rc_runs_join(&u, ends + maxruns, nlast, ends, nfirst);
 		rc_uf_components(&u, n_patches, sum_sq);
 		rv = 0;
 	}
@@ -184,25 +189,15 @@ rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
 }
 
 int
+rc_contact_patches_open(const unsigned char *contact, size_t nx, size_t ny,
+    size_t *n_patches, double *sum_sq, rc_err *err)
+{
+	return patches(contact, nx, ny, 0, n_patches, sum_sq, err);
+}
+
+int
 rc_contact_patches(const unsigned char *contact, size_t nx, size_t ny,
     size_t *n_patches, double *sum_sq, rc_err *err)
 {
-	rc_uf u = { NULL, NULL, 0, 0 };
-	rc_run *ends;
-	size_t maxruns = nx / 2 + 1, nfirst, nlast;
-	int rv = -1;
-
-	if ((ends = rc_calloc(2 * maxruns, sizeof(*ends), err)) == NULL)
-		return -1;
-	if (rc_patches_slab(contact, nx, ny, &u, ends, &nfirst,
-	    ends + maxruns, &nlast, err) != 0)
-		goto out;
-	/* Across the y boundary (a self-join when ny = 1, which is harmless). */
-	rc_runs_join(&u, ends + maxruns, nlast, ends, nfirst);
-	rc_uf_components(&u, n_patches, sum_sq);
-	rv = 0;
-out:
-	rc_uf_free(&u);
-	free(ends);
-	return rv;
+	return patches(contact, nx, ny, 1, n_patches, sum_sq, err);
 }

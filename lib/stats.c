@@ -294,8 +294,9 @@ rc_stats_compute_fft(const rc_grid *g, const rc_grid *mask,
 	return rc;
 }
 
-/* Long: three reduction passes over one derivative buffer, ordered to
- * need one field at a time; split, their dozen sums would travel in a
+/* Long: three reduction passes over one derivative buffer (and the
+ * rc_field_sums of gbar and gbar_prime, shared with gfmd-solve), ordered
+ * to need one field at a time; split, their dozen sums would travel in a
  * struct. */
 static int
 stats_compute(const rc_grid *g, const rc_grid *mask,
@@ -309,12 +310,19 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	/* Sums of the averages, named after what they average. */
 	double m2, m3, m4, mxx, myy, mxy, hxx2;
 	double dh_g2, dh2_lap, lap1, dh2_g2, dh3_lap;
-	double lap2, dh2_lap2, g4, dh_lap;
+	double lap2, dh2_lap2, g4, dh_lap, grad2, unused;
+	unsigned char *set = NULL;	/* the mask for rc_field_sums */
 
 	if (mask != NULL && (count = rc_mask_check(mask, g, err)) == 0)
 		return -1;
-	if (pair_make(g, m, fft, &pr, err) != 0)
+	if (mask != NULL && (set = rc_malloc(n, err)) == NULL)
 		return -1;
+	for (size_t k = 0; set != NULL && k < n; k++)
+		set[k] = mask->z[k] == 1;
+	if (pair_make(g, m, fft, &pr, err) != 0) {
+		free(set);
+		return -1;
+	}
 	const double *hx = pr.a, *hy = pr.b, *lap = pr.b, *hxx = pr.b;
 
 	#pragma omp parallel for schedule(static)
@@ -365,12 +373,13 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	ordered_sums(part, 9, sums);
 	m2 = sums[0]; m3 = sums[1]; m4 = sums[2]; mxx = sums[3]; myy = sums[4];
 	mxy = sums[5]; dh_g2 = sums[6]; dh2_g2 = sums[7]; g4 = sums[8];
+	rc_field_sums(h, hx, hy, NULL, set, n, mean, &grad2, &unused);
 	if (one_field(g, m, pr.fft, F_LAP, pr.b, err) != 0)
 		goto fail;
 	#pragma omp parallel for schedule(static)
 	for (long p = 0; p < NPART; p++) {
 		double *a = part[p];
-		memset(a, 0, 6 * sizeof(double));
+		memset(a, 0, 5 * sizeof(double));
 		for (size_t k = part_start(p, n); k < part_start(p + 1, n); k++) {
 			if (!in_set(mask, k))
 				continue;
@@ -380,12 +389,12 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 			a[2] += d2 * d * l;
 			a[3] += l * l;
 			a[4] += d2 * l * l;
-			a[5] += d * l;
 		}
 	}
-	ordered_sums(part, 6, sums);
+	ordered_sums(part, 5, sums);
 	dh2_lap = sums[0]; lap1 = sums[1]; dh3_lap = sums[2]; lap2 = sums[3];
-	dh2_lap2 = sums[4]; dh_lap = sums[5];
+	dh2_lap2 = sums[4];
+	rc_field_sums(h, NULL, NULL, lap, set, n, mean, &unused, &dh_lap);
 	if (one_field(g, m, pr.fft, F_XX, pr.b, err) != 0)
 		goto fail;
 	#pragma omp parallel for schedule(static)
@@ -398,11 +407,12 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	}
 	ordered_sums(part, 1, &hxx2);
 	pair_free(&pr);
+	free(set);
 
 	double c = (double)count;
 	m2 /= c; m3 /= c; m4 /= c; mxx /= c; myy /= c; mxy /= c; hxx2 /= c;
 	dh_g2 /= c; dh2_lap /= c; lap1 /= c; dh2_g2 /= c; dh3_lap /= c;
-	lap2 /= c; dh2_lap2 /= c; g4 /= c; dh_lap /= c;
+	lap2 /= c; dh2_lap2 /= c; g4 /= c; dh_lap /= c; grad2 /= c;
 
 	double gg = mxx + myy, rm2 = sqrt(m2), gg2 = gg * gg;
 	double trm2 = mxx * mxx + myy * myy + 2 * mxy * mxy;
@@ -415,7 +425,7 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	s->kurtosis = ratio(m4, m2 * m2);
 	s->hmin = hmin;
 	s->hmax = hmax;
-	s->gbar = sqrt(gg);
+	s->gbar = sqrt(grad2);
 	s->gbar_prime = rc_signed_root(-dh_lap);
 	s->rms_laplacian = sqrt(lap2);
 	s->mxx = mxx;
@@ -435,6 +445,7 @@ stats_compute(const rc_grid *g, const rc_grid *mask,
 	return 0;
 fail:
 	pair_free(&pr);
+	free(set);
 	return -1;
 }
 

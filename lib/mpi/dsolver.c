@@ -260,14 +260,14 @@ rc_mpi_contact_analyse(rc_solver *s, double alpha, double pressure,
 	memcpy(spec0, e->fft.spec, nc * sizeof(fftw_complex));
 	sums[0] = sums[1] = 0;
 	for (int d = RC_DERIV_X; d <= RC_DERIV_LAPLACIAN; d++) {
+		double g, l;
+
 		deriv(s, spec0, (enum rc_deriv)d, f);
-		for (k = 0; k < n; k++)
-			if (s->contact[k]) {
-				if (d != RC_DERIV_LAPLACIAN)
-					sums[0] += f[k] * f[k];
-				else
-					sums[1] += f[k] * (s->height[k] - hbar);
-			}
+		rc_field_sums(s->height, d == RC_DERIV_X ? f : NULL,
+		    d == RC_DERIV_Y ? f : NULL, d == RC_DERIV_LAPLACIAN ? f : NULL,
+		    s->contact, n, hbar, &g, &l);
+		sums[0] += g;
+		sums[1] += l;
 	}
 	rc_mpi_sum(sums, 2);
 	fftw_free(spec0);
