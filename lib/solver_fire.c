@@ -44,9 +44,9 @@
  * the most at small p* (1159 with m_0 = 10 k_min); the adaptive m_0 with
  * M0_SCALE = 2 takes 31 ... 64 at 128^2 and 512^2 for p* = 0.002 ... 0.2.
  *
- * Parameters (time in units of 1/omega, omega = 1 the common mode
- * frequency; tuned on 256^2, p* = 0.05, H = 0.8, checked at 128^2 ...
- * 1024^2 and p* 0.002 ... 0.5):
+ * Parameters (RC_FIRE_* in solver_impl.h; time in units of 1/omega,
+ * omega = 1 the common mode frequency; tuned on 256^2, p* = 0.05,
+ * H = 0.8, checked at 128^2 ... 1024^2 and p* 0.002 ... 0.5):
  *   DT_START    1.0   initial time step (each solve starts here)
  *   DT_MAX      2.0   largest time step (the stability limit of a
  *                     frequency-1 oscillator; reached only in free flight)
@@ -90,15 +90,6 @@
  * and every sum over points is completed through rc_elastic_sum. */
 #define POINTS(s)	rc__points(s)
 
-#define DT_START	1.0
-#define DT_MAX		2.0
-#define N_MIN		1
-#define F_INC		1.1
-#define F_DEC		0.85
-#define ALPHA_START	0.5
-#define F_ALPHA		0.99
-#define M0_SCALE	2.0
-#define PROGRESS_EVERY	50
 #define CHUNK		8192	/* points per step of a threaded pass */
 
 int
@@ -220,14 +211,14 @@ fire_schedule(struct fire_step *st, double power)
 {
 	st->restart = !(power > 0);
 	if (!st->restart) {
-		if (++st->npos > N_MIN) {
-			st->dt = fmin(st->dt * F_INC, DT_MAX);
-			st->alpha *= F_ALPHA;
+		if (++st->npos > RC_FIRE_N_MIN) {
+			st->dt = fmin(st->dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
+			st->alpha *= RC_FIRE_F_ALPHA;
 		}
 	} else {
 		st->npos = 0;
-		st->dt *= F_DEC;
-		st->alpha = ALPHA_START;
+		st->dt *= RC_FIRE_F_DEC;
+		st->alpha = RC_FIRE_ALPHA_START;
 	}
 }
 
@@ -352,7 +343,7 @@ fire_done(rc_solver *s, long it, double residual, size_t n_contact,
 	}
 	if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop))
 		return 1;
-	if (s->opts.progress && it % PROGRESS_EVERY == 0)
+	if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 		s->opts.progress(s->opts.progress_ctx, it, residual,
 		    (double)n_contact / POINTS(s));
 	return 0;
@@ -361,7 +352,7 @@ fire_done(rc_solver *s, long it, double residual, size_t n_contact,
 static double
 mass0_of(const rc_solver *s, size_t n_contact)
 {
-	return M0_SCALE * s->el.k_min *
+	return RC_FIRE_M0_SCALE * s->el.k_min *
 	    sqrt((double)(n_contact > 0 ? n_contact : 1) / POINTS(s));
 }
 
@@ -377,7 +368,7 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 	rc_fft *f = &e->fft;
 	size_t nb = rc_fft_row_blocks(f), nx = e->nx, n_contact, b;
 	double *a = f->real, inv_n = 1.0 / (double)e->n;
-	struct fire_step st = { DT_START, ALPHA_START, 0, 0, 1, 0 };
+	struct fire_step st = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0, 0, 1, 0 };
 	rc_fft_multiplier stiff = { e->stiffness, inv_n, 0, 0 };
 	rc_fft_multiplier mass = { e->stiffness, inv_n, 1, 0 };
 	long it;
@@ -438,7 +429,7 @@ static long
 fire_plain(rc_solver *s, double p, double *residual, int *status)
 {
 	size_t n = s->n, nb = (n + CHUNK - 1) / CHUNK, n_contact, b;
-	struct fire_step st = { DT_START, ALPHA_START, 0, 0, 1, 0 };
+	struct fire_step st = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0, 0, 1, 0 };
 	long it;
 
 	for (it = 0; ; it++) {

@@ -52,12 +52,6 @@
 
 #include "adhesion.h"
 
-/* FIRE's parameters: the values of solver_fire.c (measured there). */
-static const struct {
-	double dt_start, dt_max, f_inc, f_dec, alpha_start, f_alpha, m0_scale;
-	long n_min, progress_every;
-} FP = { 1.0, 2.0, 1.1, 0.85, 0.5, 0.99, 2.0, 1, 50 };
-
 /* FIRE's step size and mixing (the rules of solver_fire.c). */
 struct fire {
 	double dt, alpha;
@@ -70,13 +64,13 @@ fire_adapt(struct fire *fs, double pw)
 {
 	if (!(pw > 0)) {
 		fs->npos = 0;
-		fs->dt *= FP.f_dec;
-		fs->alpha = FP.alpha_start;
+		fs->dt *= RC_FIRE_F_DEC;
+		fs->alpha = RC_FIRE_ALPHA_START;
 		return 1;
 	}
-	if (++fs->npos > FP.n_min) {
-		fs->dt = fmin(fs->dt * FP.f_inc, FP.dt_max);
-		fs->alpha *= FP.f_alpha;
+	if (++fs->npos > RC_FIRE_N_MIN) {
+		fs->dt = fmin(fs->dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
+		fs->alpha *= RC_FIRE_F_ALPHA;
 	}
 	return 0;
 }
@@ -229,7 +223,7 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
     rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
-	struct fire fs = { FP.dt_start, FP.alpha_start, 0 };
+	struct fire fs = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0 };
 	double residual = HUGE_VAL, *u = s->u, *v = s->fire_vel, p = *pp;
 	double target = 0;
 	const double *h = s->height;
@@ -281,10 +275,10 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
 		}
 		if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop))
 			break;
-		if (s->opts.progress && it % FP.progress_every == 0)
+		if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
 			    (double)ps.on / (double)n);
-		mass0 = control ? HUGE_VAL : FP.m0_scale * s->el.k_min *
+		mass0 = control ? HUGE_VAL : RC_FIRE_M0_SCALE * s->el.k_min *
 		    sqrt((double)(ps.on > 0 ? ps.on : 1) / (double)n);
 		a = rc__fire_mass_weighted(s, mass0);
 		restart = fire_adapt(&fs, ps.power);

@@ -46,15 +46,6 @@
 #include <math.h>
 #include <string.h>
 
-#define DT_START	1.0
-#define DT_MAX		2.0
-#define N_MIN		1
-#define F_INC		1.1
-#define F_DEC		0.85
-#define ALPHA_START	0.5
-#define F_ALPHA		0.99
-#define PROGRESS_EVERY	50
-
 /* a = K f (mean mode 0) into the periodic operator's real buffer. */
 static double *
 stiffness_times(rc_solver *s, const double *f)
@@ -83,7 +74,8 @@ int
 rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
-	double dt = DT_START, alpha = ALPHA_START, residual = HUGE_VAL;
+	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
+	double residual = HUGE_VAL;
 	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
 	double k_max = rc__stiffness_max(s), pn = p * (double)n;
 	const double *h = s->height;
@@ -118,20 +110,20 @@ rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				status = 0;
 			break;
 		}
-		if (s->opts.progress && it % PROGRESS_EVERY == 0)
+		if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 			s->opts.progress(s->opts.progress_ctx, it, residual,
 			    (double)on / (double)n);
 		a = stiffness_times(s, f);
 		restart = !(power > 0);
 		if (!restart) {
-			if (++npos > N_MIN) {
-				dt = fmin(dt * F_INC, DT_MAX);
-				alpha *= F_ALPHA;
+			if (++npos > RC_FIRE_N_MIN) {
+				dt = fmin(dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
+				alpha *= RC_FIRE_F_ALPHA;
 			}
 		} else {
 			npos = 0;
-			dt *= F_DEC;
-			alpha = ALPHA_START;
+			dt *= RC_FIRE_F_DEC;
+			alpha = RC_FIRE_ALPHA_START;
 		}
 #pragma omp parallel for reduction(+:aa, av, vv) schedule(static)
 		for (k = 0; k < n; k++) {

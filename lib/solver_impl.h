@@ -88,4 +88,17 @@ int rc__cg_next(rc_solver *s, double p, double bound, long it,
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 
+/* FIRE's parameters, shared by its three loops (solver_fire.c, which
+ * says what each is and how it was tuned; solver_fire_free.c;
+ * solver_fire_adh.c). */
+#define RC_FIRE_DT_START	1.0
+#define RC_FIRE_DT_MAX		2.0
+#define RC_FIRE_N_MIN		1
+#define RC_FIRE_F_INC		1.1
+#define RC_FIRE_F_DEC		0.85
+#define RC_FIRE_ALPHA_START	0.5
+#define RC_FIRE_F_ALPHA		0.99
+#define RC_FIRE_M0_SCALE	2.0
+#define RC_FIRE_PROGRESS_EVERY	50
+
 #endif
