@@ -24,11 +24,13 @@
  * on a bonded elastic layer of thickness L/8, nu = 0.3 (gfmd-solve
  * --thickness; lib/layer.h): the cost of a finite thickness against the
  * half space's rows (a_r error again against the half space).
- * One more, fire-adh (periodic only), adds the exponential adhesion of
- * gfmd-solve --adhesion (lib/adhesion.h) with range rho = dx and
- * sigma_max = dgamma / rho = p (l_adh = 20 dx, resolved): the cost of
- * adhesion against the fire row (a_r error against the non-adhesive
- * reference: the effect).
+ * One more, fire-adh, adds the exponential adhesion of gfmd-solve
+ * --adhesion (lib/adhesion.h) with range rho = dx and sigma_max =
+ * dgamma / rho = p (l_adh = 20 dx, resolved): the cost of adhesion
+ * against the fire row (a_r error against the non-adhesive reference: the
+ * effect).  On free boundaries it solves heights on the padded grid
+ * (lib/solver_fire_adh_free.c), the fire row pressures: its fft_pairs
+ * are padded pairs, as the fire row's.
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
  * the blocked transforms (fft.h) and FIRE runs its passes block by block
  * between them (solver_fire.c), fire-plain and cg-plain solve the same
@@ -178,7 +180,7 @@ static const struct bench_row {
 	{ "cg-plastic", RC_METHOD_CG, 4, 0, 1, 0, 0 },
 	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0, 0 },
 	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0, 0 },
-	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 0, 0, 1 },
+	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 1, 0, 1 },
 	{ "fire-plain", RC_METHOD_FIRE, 0, 0, 0, 1, 0 },
 	{ "cg-plain", RC_METHOD_CG, 0, 0, 0, 1, 0 },
 };

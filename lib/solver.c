@@ -130,11 +130,10 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		return NULL;
 	}
 	if (rc_solver_opts_adhesive(o) && (o->method != RC_METHOD_FIRE ||
-	    o->boundary != RC_BOUNDARY_PERIODIC || rc_solver_opts_plastic(o))) {
-		rc_seterr(err, "adhesion needs the FIRE method (--method fire) on "
-		    "periodic boundaries without a hardness: the CG solves a "
-		    "convex problem and adhesion is not one; free boundaries "
-		    "relax pressures, for which the law has no inverse");
+	    rc_solver_opts_plastic(o))) {
+		rc_seterr(err, "adhesion needs the FIRE method (--method fire) "
+		    "without a hardness: the CG solves a convex problem and "
+		    "adhesion is not one");
 		return NULL;
 	}
 	if (o->kernel != RC_KERNEL_CONTINUUM && o->kernel != RC_KERNEL_PIXEL) {
@@ -175,10 +174,13 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	s->ly = ind->ly;
 	s->free_bc = o->boundary == RC_BOUNDARY_FREE;
 	/* Free boundaries: the padded compliance; FIRE on them also uses
-	 * the periodic stiffness as its inverse mass (solver_fire_free.c). */
+	 * the periodic stiffness as its inverse mass (solver_fire_free.c);
+	 * with adhesion the operator is the padded one, made later from the
+	 * compliance (solver_fire_adh_free.c). */
 	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
 	    s->ly, o->modulus, o->fft_effort, err) != 0) ||
-	    ((!s->free_bc || o->method == RC_METHOD_FIRE) &&
+	    ((!s->free_bc || (o->method == RC_METHOD_FIRE &&
+	    !rc_solver_opts_adhesive(o))) &&
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
 	    o->fft_effort, err) != 0)) {
 		rc_halfspace_release(&s->fel);
@@ -227,6 +229,11 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_solver_free(s);
 		return NULL;
 	}
+	if (s->free_bc && rc_solver_opts_adhesive(o) &&
+	    rc__adh_free_init(s, err) != 0) {
+		rc_solver_free(s);
+		return NULL;
+	}
 	return s;
 }
 
@@ -239,6 +246,7 @@ rc_solver_free(rc_solver *s)
 		fftw_free(s->u);
 	rc_elastic_free(&s->el);
 	rc_halfspace_release(&s->fel);
+	rc__adh_free_release(s);
 	fftw_free(s->scratch);
 	fftw_free(s->height);
 	fftw_free(s->sigma);
@@ -259,6 +267,7 @@ rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err)
 	memcpy(s->u, u, s->n * sizeof(double));
 	s->have_u = 1;
 	s->have_sigma = 0;
+	s->pad.valid = 0;
 	return 0;
 }
 
@@ -435,7 +444,7 @@ size_t
 rc_solver_bytes(const rc_solver *s)
 {
 	size_t b = sizeof(*s) + rc_halfspace_bytes(&s->fel) +
-	    rc_elastic_bytes(&s->el);
+	    rc_elastic_bytes(&s->el) + rc__adh_free_bytes(s);
 	b += s->n * (2 * sizeof(double) + 1);	/* height, sigma, contact */
 	if (s->u != s->el.fft.real)
 		b += s->n * sizeof(double);

@@ -73,7 +73,7 @@ adhesive_approach(rc_solver *s, double delta, double *pressure,
 		    "(the layer's approach moves with the load)");
 	for (size_t i = 0; i < s->n; i++)
 		sum += s->height[i];
-	if (!(delta < s->top - sum / (double)s->n))
+	if (!s->free_bc && !(delta < s->top - sum / (double)s->n))
 		return rc_seterr(err, "approach %g reaches full contact "
 		    "(max h - <h> = %g)", delta, s->top - sum / (double)s->n);
 	if ((r = rc__fire_adh_solve(s, 1, &p, delta, res, err)) < 0)

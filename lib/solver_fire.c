@@ -166,18 +166,6 @@ wall_force(rc_solver *s, double p, size_t *n_contact, double *power)
 	return wall_result(s, p, sums, n_contact, power);
 }
 
-/* Step 3 without the clamp: a = M^-1 f_eff into the operator's real
- * buffer (returned); m_q = k_q, m_0 = mass0. */
-static double *
-mass_weighted(rc_solver *s, double mass0)
-{
-	rc_elastic *e = &s->el;
-	double inv_n = 1.0 / (double)e->n;
-	rc_fft_multiplier mu = { e->stiffness, inv_n, 1, inv_n / mass0 };
-
-	rc_elastic_convolve(e, s->sigma, e->fft.real, &mu);
-	return e->fft.real;
-}
 
 /* sigma on the contact set wall_force found; returns the elastic energy
  * per area (1/2) <u K u>. */
@@ -438,7 +426,8 @@ fire_plain(rc_solver *s, double p, double *residual, int *status)
 		*residual = wall_force(s, p, &n_contact, &power);
 		if (fire_done(s, it, *residual, n_contact, status))
 			break;
-		a = mass_weighted(s, mass0_of(s, n_contact));
+		a = rc__fire_mass_weighted(&s->el, s->sigma,
+		    mass0_of(s, n_contact));
 		fire_schedule(&st, power);
 #pragma omp parallel for reduction(+:sums[:3]) schedule(static)
 		for (b = 0; b < nb; b++)
@@ -472,8 +461,15 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	return status;
 }
 
+/* Step 3 without the clamp: a = M^-1 f_eff into the operator's real
+ * buffer (returned); m_q = k_q, m_0 = mass0.  Also the adhesive loop's
+ * (solver_fire_adh.c). */
 double *
-rc__fire_mass_weighted(rc_solver *s, double mass0)
+rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0)
 {
-	return mass_weighted(s, mass0);
+	double inv_n = 1.0 / (double)e->n;
+	rc_fft_multiplier mu = { e->stiffness, inv_n, 1, inv_n / mass0 };
+
+	rc_elastic_convolve(e, f, e->fft.real, &mu);
+	return e->fft.real;
 }

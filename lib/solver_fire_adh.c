@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_fire_adh.c - FIRE-GFMD with the adhesive law of adhesion.h on
- * periodic boundaries (a half space or a layer): the loop of
+ * periodic boundaries (a half space or a layer; free boundaries run the
+ * same loop on a padded grid, solver_fire_adh_free.c): the loop of
  * solver_fire.c with the adhesive traction in the wall pass, kept apart so
  * that the plain loop pays nothing for it (solver.c dispatches here only
  * when opts.adhesion > 0).
@@ -44,6 +45,10 @@
  * Cost per iteration: that of solver_fire.c plus one exp per point within
  * RC_ADH_CUTOFF ranges of the wall (displacement control: one more O(N)
  * pass for the mean).  Memory: none beyond FIRE's.
+ *
+ * The loop runs on a view (rc__adh_view, solver_impl.h) of the grid: the
+ * solver's own fields here, the padded grid of solver_fire_adh_free.c on
+ * free boundaries, where only the given area interacts.
  */
 #include "solver_impl.h"
 
@@ -98,18 +103,18 @@ struct adh_pass {
 	double gmin;		/* smallest gap off contact */
 };
 
-/* The wall pass with adhesion: f_eff into s->sigma, the contact set. */
+/* The wall pass with adhesion: f_eff into w->f, the contact set. */
 static void
-adh_wall_force(rc_solver *s, const rc_adhesion *law, double p,
+adh_wall_force(const rc__adh_view *w, const rc_adhesion *law, double p,
     struct adh_pass *o)
 {
-	size_t k, n = s->n, on = 0;
+	size_t k, n = w->n, on = 0;
 	double sum_d2 = 0, sum_kc = 0, sum_sa = 0, pw = 0, gmin = HUGE_VAL;
-	const double *u = s->u, *h = s->height, *v = s->fire_vel;
-	double *f = s->sigma, sa0 = -law->smax;
-	unsigned char *contact = s->contact;
+	const double *u = w->u, *h = w->h, *v = w->v;
+	double *f = w->f, sa0 = -law->smax;
+	unsigned char *contact = w->contact;
 
-	rc_elastic_force(&s->el, u, f);
+	rc_elastic_force(w->el, u, f);
 #pragma omp parallel for reduction(+:sum_d2, sum_kc, sum_sa, on, pw) \
     reduction(min:gmin) schedule(static)
 	for (k = 0; k < n; k++) {
@@ -142,33 +147,33 @@ adh_wall_force(rc_solver *s, const rc_adhesion *law, double p,
 
 /* Mean of max(u + c, h). */
 static double
-shifted_mean(const rc_solver *s, double c)
+shifted_mean(const rc__adh_view *w, double c)
 {
 	size_t k;
 	double sum = 0;
 
 #pragma omp parallel for reduction(+:sum) schedule(static)
-	for (k = 0; k < s->n; k++)
-		sum += fmax(s->u[k] + c, s->height[k]);
-	return sum / (double)s->n;
+	for (k = 0; k < w->n; k++)
+		sum += fmax(w->u[k] + c, w->h[k]);
+	return sum / (double)w->n;
 }
 
 /* Shift u by the c (bisection) that makes <max(u + c, h)> = target, then
  * clamp; target above <h>. */
 static void
-shift_to_mean(rc_solver *s, double target)
+shift_to_mean(const rc__adh_view *w, double target)
 {
 	size_t k;
 	double lo, hi, umin = HUGE_VAL, umax = -HUGE_VAL;
 	int it;
 
-	for (k = 0; k < s->n; k++) {
-		umin = fmin(umin, s->u[k]);
-		umax = fmax(umax, s->u[k]);
+	for (k = 0; k < w->n; k++) {
+		umin = fmin(umin, w->u[k]);
+		umax = fmax(umax, w->u[k]);
 	}
 	/* already there (a warm start at the same approach): keep the
 	 * contact points on the wall, which any shift up would lift */
-	if (fabs(shifted_mean(s, 0) - target) <= 1e-14 * (fabs(target) +
+	if (fabs(shifted_mean(w, 0) - target) <= 1e-14 * (fabs(target) +
 	    umax - umin))
 		return;
 	/* The mean is non-decreasing in c, at least target at c = target -
@@ -176,19 +181,19 @@ shift_to_mean(rc_solver *s, double target)
 	 * 50 O(N) passes, a few iterations' worth, once per solve). */
 	hi = target - umin;
 	lo = target - umax;
-	for (it = 0; it < 200 && shifted_mean(s, lo) > target; it++)
+	for (it = 0; it < 200 && shifted_mean(w, lo) > target; it++)
 		lo -= (hi - lo) + 1;
 	for (it = 0; it < 200 && hi - lo > 1e-15 * (fabs(hi) +
 	    fabs(lo)); it++) {
 		double mid = 0.5 * (lo + hi);
 
-		if (shifted_mean(s, mid) > target)
+		if (shifted_mean(w, mid) > target)
 			hi = mid;
 		else
 			lo = mid;
 	}
-	for (k = 0; k < s->n; k++)
-		s->u[k] = fmax(s->u[k] + hi, s->height[k]);
+	for (k = 0; k < w->n; k++)
+		w->u[k] = fmax(w->u[k] + hi, w->h[k]);
 }
 
 /* The state's pressures (total traction: p + K u on contact, sigma_a
@@ -219,37 +224,21 @@ adh_finish(rc_solver *s, const rc_adhesion *law, double p)
  * displacement control differ inside them (the mean mode, the separation
  * test), not around them. */
 int
-rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
-    rc_solve_result *res, rc_err *err)
+rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
+    double *pp, double target, const rc_solver_opts *opts,
+    rc_solve_result *res)
 {
-	size_t n = s->n, k;
+	size_t n = w->n, k;
 	struct fire fs = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0 };
-	double residual = HUGE_VAL, *u = s->u, *v = s->fire_vel, p = *pp;
-	double target = 0;
-	const double *h = s->height;
-	const unsigned char *contact = s->contact;
-	rc_adhesion law;
+	double residual = HUGE_VAL, *u = w->u, *v = w->v, p = *pp;
+	const double *h = w->h;
+	const unsigned char *contact = w->contact;
+	/* the view's points per interacting one: 1 on a periodic grid */
+	double spread = (double)n / w->n_act;
 	struct adh_pass ps;
 	long it;
 	int status = 1;
 
-	if (rc_adhesion_init(&law, s->opts.adhesion, s->opts.range) != 0)
-		return rc_seterr(err, "adhesion %g, range %g: want both positive "
-		    "and finite", s->opts.adhesion, s->opts.range);
-	if (!s->have_u) {
-		for (k = 0; k < n; k++)
-			u[k] = s->top;
-		s->have_u = 1;
-	}
-	for (k = 0; k < n; k++)
-		if (u[k] < h[k])
-			u[k] = h[k];
-	if (control) {
-		target = s->top - delta;
-		shift_to_mean(s, target);
-		if (!isfinite(p))
-			p = 0;
-	}
 	memset(v, 0, n * sizeof(double));
 	res->separated = 0;
 	for (it = 0; ; it++) {
@@ -258,29 +247,32 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
 		size_t nf;
 		int restart;
 
-		adh_wall_force(s, &law, p, &ps);
+		adh_wall_force(w, law, p, &ps);
 		nf = n - ps.on;
-		scale = fmax(fabs(p), law.smax);
-		residual = sqrt(ps.sum_d2 / (double)n) / scale;
+		/* p on every point of the view: the load p n over the
+		 * points that interact */
+		scale = fmax(fabs(p) * spread, law->smax);
+		residual = sqrt(ps.sum_d2 / w->n_act) / scale;
 		if (control && nf > 0)
 			p = (ps.sum_ku_c + ps.sum_sa_f) / (double)nf;
-		if (residual <= s->opts.tol) {
+		if (residual <= opts->tol) {
 			status = 0;
 			break;
 		}
 		if (!control && ps.on == 0 && p < 0 &&
-		    law.smax * exp(-ps.gmin / law.range) < -p) {
+		    law->smax * exp(-ps.gmin / law->range) < -p * spread) {
 			res->separated = 1;
 			break;
 		}
-		if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop))
+		if (it >= opts->max_iter || (opts->stop && *opts->stop))
 			break;
-		if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
-			s->opts.progress(s->opts.progress_ctx, it, residual,
-			    (double)ps.on / (double)n);
-		mass0 = control ? HUGE_VAL : RC_FIRE_M0_SCALE * s->el.k_min *
+		if (opts->progress && it % RC_FIRE_PROGRESS_EVERY == 0)
+			opts->progress(opts->progress_ctx, it, residual,
+			    (double)ps.on / w->n_act);
+		mass0 = control ? HUGE_VAL : w->mass0 > 0 ? w->mass0 :
+		    RC_FIRE_M0_SCALE * w->el->k_min *
 		    sqrt((double)(ps.on > 0 ? ps.on : 1) / (double)n);
-		a = rc__fire_mass_weighted(s, mass0);
+		a = rc__fire_mass_weighted(w->el, w->f, mass0);
 		restart = fire_adapt(&fs, ps.power);
 		/* Displacement control: the step's mean over F removed
 		 * first (a = 0 on C, v = 0 on a restart). */
@@ -327,9 +319,44 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
 						u[k] = fmax(u[k] + c, h[k]);
 		}
 	}
-	adh_finish(s, &law, p);
 	*pp = p;
 	res->iterations = it;
 	res->residual = residual;
 	return status;
+}
+
+int
+rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
+    rc_solve_result *res, rc_err *err)
+{
+	rc__adh_view w = { &s->el, s->n, (double)s->n, s->u, s->fire_vel,
+	    s->sigma, s->height, s->contact, 0 };
+	double target = 0, p = *pp;
+	rc_adhesion law;
+	size_t k;
+	int r;
+
+	if (rc_adhesion_init(&law, s->opts.adhesion, s->opts.range) != 0)
+		return rc_seterr(err, "adhesion %g, range %g: want both positive "
+		    "and finite", s->opts.adhesion, s->opts.range);
+	if (s->free_bc)
+		return rc__fire_adh_free_solve(s, &law, control, pp, delta, res);
+	if (!s->have_u) {
+		for (k = 0; k < s->n; k++)
+			s->u[k] = s->top;
+		s->have_u = 1;
+	}
+	for (k = 0; k < s->n; k++)
+		if (s->u[k] < s->height[k])
+			s->u[k] = s->height[k];
+	if (control) {
+		target = s->top - delta;
+		shift_to_mean(&w, target);
+		if (!isfinite(p))
+			p = 0;
+	}
+	r = rc__adh_loop(&w, &law, control, &p, target, &s->opts, res);
+	adh_finish(s, &law, p);
+	*pp = p;
+	return r;
 }

@@ -10,6 +10,17 @@
 #include "elastic_free.h"
 #include "solver.h"
 
+/* Adhesion on free boundaries (solver_fire_adh_free.c): the state on the
+ * padded 2nx x 2ny grid, whose operator is then s->el. */
+typedef struct rc_adh_pad {
+	size_t n;		/* 4 nx ny */
+	double *u, *v, *f;	/* height, velocity, force; n each */
+	double *h;		/* the indenter, -inf off the given area */
+	unsigned char *contact;
+	double stiffness0;	/* kappa_0 = 1 / sum C, the mean mode's */
+	int valid;		/* u holds a state */
+} rc_adh_pad;
+
 struct rc_solver {
 	rc_solver_opts opts;
 	size_t nx, ny, n;
@@ -35,6 +46,7 @@ struct rc_solver {
 	double k_uniform;	/* a layer: k_0 (layer.h); +inf: half space */
 	/* adhesion (solver_fire_adh.c): p_adh and a_attr of the solution */
 	double p_adh, a_attr;
+	rc_adh_pad pad;		/* adhesion on free boundaries */
 };
 
 /* The number of points of the whole grid: s->n, or the global count of a
@@ -48,14 +60,40 @@ void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
-/* FIRE's a = M^-1 f_eff, f_eff in s->sigma, m_0 = mass0 (solver_fire.c);
- * the operator's real buffer, returned. */
-double *rc__fire_mass_weighted(rc_solver *s, double mass0);
+/* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0 (solver_fire.c);
+ * e's real buffer, returned. */
+double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
 /* FIRE with the adhesive law (solver_fire_adh.c): load control at p
  * (control 0) or the mean height held at max h - delta (control 1; the
  * pressure found into *p). */
 int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
     rc_solve_result *res, rc_err *err);
+/* What that loop runs on: the operator's grid of n points, of which
+ * n_act interact (the rest: h = -inf); mass0 > 0 the mean mode's mass
+ * (else load control's rule, solver_fire.c).  The loop: control 0, p on
+ * every one of the n points; control 1, <u> held at target (periodic
+ * only), p found.  Status as rc_solver_solve. */
+typedef struct rc__adh_view {
+	rc_elastic *el;
+	size_t n;
+	double n_act;
+	double *u, *v, *f;
+	const double *h;
+	unsigned char *contact;
+	double mass0;
+} rc__adh_view;
+struct rc_adhesion;
+int rc__adh_loop(const rc__adh_view *w, const struct rc_adhesion *law,
+    int control, double *p, double target, const rc_solver_opts *opts,
+    rc_solve_result *res);
+/* Free boundaries (solver_fire_adh_free.c): the padded operator and
+ * state, made from s->fel (released after); the solve, as
+ * rc__fire_adh_solve. */
+int rc__adh_free_init(rc_solver *s, rc_err *err);
+void rc__adh_free_release(rc_solver *s);
+size_t rc__adh_free_bytes(const rc_solver *s);
+int rc__fire_adh_free_solve(rc_solver *s, const struct rc_adhesion *law,
+    int control, double *p, double delta, rc_solve_result *res);
 /* Free boundaries (solver_cg.c): the rigid level c = <h - G sigma> over
  * {sigma > 0} (returns its size); the convergence measure and the
  * admissible u' from s->u = G sigma (leaves u', the contact set, level

@@ -188,9 +188,8 @@ usage(void)
 "                       (default) or frictionless\n"
 "  --adhesion DGAMMA    adhesion: work of adhesion DGAMMA (units of E* times\n"
 "                       length) of the exponential law -(DGAMMA/RHO)\n"
-"                       exp(-gap/RHO) (FIRE, periodic; pressures and\n"
-"                       approaches may then be zero or negative; default\n"
-"                       none)\n"
+"                       exp(-gap/RHO) (FIRE; pressures and approaches may\n"
+"                       then be zero or negative; default none)\n"
 "  --range RHO          the adhesive law's range (length units)\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
@@ -398,20 +397,16 @@ checkpoint_setup(struct run *r)
 
 /* The boundary kind, the indenter's rms gradient gbar (the unit of p*)
  * and the checks on its scale. */
-/* Adhesion: periodic boundaries only; l_adh / dx, and a warning when the
- * grid does not resolve the law (adhesion.h). */
+/* Adhesion: l_adh / dx, and a warning when the grid does not resolve
+ * the law (adhesion.h). */
 static void
-adhesion_setup(struct run *r, const char *name)
+adhesion_setup(struct run *r)
 {
 	const rc_grid *h = r->h;
 	double dx = fmax(h->lx / (double)h->nx, h->ly / (double)h->ny);
 	double l = rc_adhesion_length(r->o.modulus, r->o.so.adhesion,
 	    r->o.so.range);
 
-	if (r->o.so.boundary == RC_BOUNDARY_FREE)
-		tool_fail(&r->t, "--adhesion: %s is solved with free boundaries "
-		    "(not marked periodic), which adhesion does not have; add "
-		    "--boundary periodic", name);
 	r->l_adh_dx = l / dx;
 	if (l < dx)
 		tool_warn(&r->t, "--adhesion: the law is not resolved by the grid: "
@@ -456,7 +451,7 @@ indenter_setup(struct run *r)
 	}
 	gfmd_check_scale(&r->t, r->input, hi - lo, r->gbar);
 	if (rc_solver_opts_adhesive(&o->so))
-		adhesion_setup(r, name);
+		adhesion_setup(r);
 	if (o->nreduced && !(r->gbar > 0))
 		tool_fail(&r->t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",

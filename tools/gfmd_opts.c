@@ -221,10 +221,6 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 	if (o->given_hardness)
 		tool_bad(t, "--adhesion with --hardness: plasticity needs --method "
 		    "cg, adhesion --method fire; not combined");
-	if (o->boundary == RC_BOUNDARY_FREE)
-		tool_bad(t, "--adhesion: periodic boundaries only (free boundaries "
-		    "relax pressures, and the adhesive law has no inverse); drop "
-		    "--boundary free or add --boundary periodic");
 	if (o->given_layer && o->napproach)
 		tool_bad(t, "--adhesion with --thickness: load control (-p, "
 		    "--pressure-abs) only, not --approach");

@@ -5,7 +5,7 @@
 # closed form of gfmd-solve(1), ADHESION), a load list that goes up and
 # down (hysteresis), separation past pull-off (row and message), the rows'
 # columns, the resolution warning, zero and negative loads only with
-# adhesion, and the refusals.
+# adhesion, the refusals, and a sphere's pull-off on free boundaries.
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
@@ -84,14 +84,26 @@ check_status "--adhesion 0" 2 gfmd-solve --adhesion 0 --range 0.1 -p 0.1 "$T/sin
 check_status "--adhesion with --method cg" 2 gfmd-solve $ADH --method cg -p 0.1 "$T/sine.surf"
 check "--method cg: the message names --method fire" grep -q -- "--method fire" "$T/stderr"
 check_status "--adhesion with --hardness" 2 gfmd-solve $ADH --method cg --hardness 1 -p 0.1 "$T/sine.surf"
-check_status "--adhesion with --boundary free" 2 gfmd-solve $ADH --boundary free -p 0.1 "$T/sine.surf"
 check_status "--adhesion with --checkpoint" 2 gfmd-solve $ADH --checkpoint "$T/ck.surf" -p 0.1 "$T/sine.surf"
 check_status "--adhesion, --thickness and --approach" 2 gfmd-solve $ADH --thickness 10 --poisson 0.3 --approach 1 "$T/sine.surf"
 # a layer under load control is allowed
 gfmd-solve -q -j 1 $ADH --thickness 1000 --poisson 0.3 --pressure-abs 0.01 "$T/sine.surf" > "$T/l.tsv"
 check "--adhesion on a layer under load control: solved" test $? -eq 0
-surfgen -q -n 32 --seed 2 | surfwarp --detrend plane -o "$T/open.surf"
-check_status "--adhesion on a non-periodic map without --boundary periodic" 1 \
-    gfmd-solve $ADH -p 0.1 "$T/open.surf"
-check "non-periodic map: the message names --boundary periodic" grep -q -- "--boundary periodic" "$T/stderr"
+
+# --- Free boundaries: a sphere (R = 50, 96^2, dx = 1) alone on its area,
+# unloaded under displacement control from approach 0.3 to -0.2; the
+# least force F = p lx ly is the pull-off, -2 pi dgamma R in the DMT limit
+# (mu = 0.085 here; the C test measured -1.969: tolerance 2.5%).  The map
+# is marked non-periodic, so free boundaries are the default.
+surfgen -q -n 96 -L 96 --type harmonic --radius 50 |
+    surfwarp --no-periodic -o "$T/sphere.surf"
+gfmd-solve -q -j 1 --adhesion 0.01 --range 2 --tol 1e-8 \
+    --approach "$(awk 'BEGIN { for (d = 0.3; d > -0.205; d -= 0.01) printf "%s%.2f", (d < 0.3 ? "," : ""), d }')" \
+    "$T/sphere.surf" > "$T/free.tsv" 2> "$T/free.err"
+check "free sphere: solved" test $? -eq 0
+check "free sphere: free boundaries in the rows" test "$(col "$T/free.tsv" boundary)" = free
+pull=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "p") c = i; next }
+    NR == 2 || $c < m { m = $c } END { printf "%.17g\n", m * 96 * 96 / (3.14159265358979324 * 0.01 * 50) }' "$T/free.tsv")
+check_range "free sphere: pull-off F / (pi dgamma R) = $pull (DMT -2)" "$pull" -2 -1.95
+check "free sphere: the last rows are off the indenter" test "$(col "$T/free.tsv" n_c 51)" = 0
 summary

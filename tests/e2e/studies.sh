@@ -90,14 +90,22 @@ n1=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.25)
 n2=$(pick "$T_TMP/$N/nayak.tsv" nayak eps_f 0.125)
 check "nayak: Nayak(eps_f=1/8)=$n2 > Nayak(eps_f=1/4)=$n1" awk -v a="$n2" -v b="$n1" 'BEGIN { exit !(a > b && b > 0) }'
 # effects: on the same surface, perfect plasticity raises kappa (a_r >=
-# p/H adds flattened area) and a thin bonded layer lowers it (stiffer
-# than the half space at long wavelengths).
+# p/H adds flattened area), a thin bonded layer lowers it (stiffer than
+# the half space at long wavelengths), and adhesion raises it (the
+# contact carries the attraction's tension on top of the load; p_adh < 0).
 E=effects
-make -s -j2 -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" LS=0.125 SEEDS=1 PRESSURES=0.1 EPS_C="0.5 0.25" HARD=0.5 THICK=0.125 >"$T_TMP/e.log" 2>&1
+EARGS="LS=0.125 SEEDS=1 PRESSURES=0.1 HARD=0.5 THICK=0.125 ADH=2e-4"
+# shellcheck disable=SC2086
+make -s -j2 -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" $EARGS EPS_C="0.5 0.25" >"$T_TMP/e.log" 2>&1
 check "effects: make runs" test -s "$T_TMP/$E/kappa.png" -a -s "$T_TMP/$E/paired.tsv"
-check_status "effects: second make has nothing to do" 0 make -q -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" LS=0.125 SEEDS=1 PRESSURES=0.1 EPS_C="0.5 0.25" HARD=0.5 THICK=0.125
+# shellcheck disable=SC2086
+check_status "effects: second make has nothing to do" 0 make -q -C "$S/$E" BIN="$RC_BIN" OUT="$T_TMP/$E" $EARGS EPS_C="0.5 0.25"
 ke=$(pick "$T_TMP/$E/kappa.tsv" kappa curve elastic)
 kh=$(pick "$T_TMP/$E/kappa.tsv" kappa curve hard0.5)
 kt=$(pick "$T_TMP/$E/kappa.tsv" kappa curve th0.125)
+ka=$(pick "$T_TMP/$E/kappa.tsv" kappa curve adh2e-4)
 check "effects: kappa plastic $kh > elastic $ke > layer $kt" awk -v h="$kh" -v e="$ke" -v t="$kt" 'BEGIN { exit !(h > e && e > t && t > 0) }'
+check "effects: kappa adhesive $ka > elastic $ke" awk -v a="$ka" -v e="$ke" 'BEGIN { exit !(a > e && e > 0) }'
+check_range "effects: the paired difference of adhesion is positive" \
+    "$(pick "$T_TMP/$E/paired.tsv" dkappa variant adh0.0002)" 0.01 10
 summary
