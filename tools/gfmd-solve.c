@@ -787,6 +787,12 @@ output_end(struct run *r)
 		rc_atomic_abort(&r->out);
 		tool_fail_at(&r->t, r->t.out ? r->t.out : "standard output", err.msg);
 	}
+	/* A first signal after the last solve (no solve left to stop):
+	 * the rows are kept, no fields, as for one inside a solve. */
+	if (stop_signal)
+		tool_fail(&r->t, "interrupted by signal %d after the last "
+		    "pressure; the rows of all %zu pressures are written, no "
+		    "fields", (int)stop_signal, r->npressures);
 	if (!r->o.fd)
 		rc_fft_free(&r->fft);
 }
