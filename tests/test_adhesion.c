@@ -490,7 +490,9 @@ test_hysteresis(void)
  * two controls meet: the load that displacement control found, applied
  * under load control, gives back the approach (the rigid level c =
  * <u> - F / (4N kappa_0) of solver_fire_adh_free.c) to the tolerance;
- * load control past pull-off separates, below it holds. */
+ * load control past pull-off separates, below it holds.  Hysteresis: the
+ * JKR sphere loaded from approach -4 jumps into contact at -1.5, and
+ * unloaded leaves it at -2.5 (measured). */
 static void
 test_free_sphere(double dmt_periodic)
 {
@@ -499,8 +501,8 @@ test_free_sphere(double dmt_periodic)
 	rc_grid *g = sphere(96, 50);
 	rc_solver *s;
 	struct sweep w;
-	double f, pc, p1, a0 = cbrt(9 * M_PI * 0.25 * 54 * 54 / 2);
-	int st;
+	double f, pc, p1, a0 = cbrt(9 * M_PI * 0.25 * 54 * 54 / 2), d_in = NAN;
+	int st = 0;
 
 	g->periodic = 0;
 	s = adhesive_bc(g, 0.01, 2, 1e-8, RC_BOUNDARY_FREE);
@@ -517,7 +519,15 @@ test_free_sphere(double dmt_periodic)
 	g = sphere(128, 54);
 	g->periodic = 0;
 	s = adhesive_bc(g, 0.25, 0.5, 1e-6, RC_BOUNDARY_FREE);
+	/* loading from outside first: the jump into contact */
+	for (double d = -4; d <= 3; d += 0.25) {
+		at_approach(s, d, &st, NULL);
+		if (n_contact(s, 128 * 128) > 0 && isnan(d_in))
+			d_in = d;
+	}
 	w = unload(s, 128, 3, 0.25);
+	test_true(w.d_out < d_in, "free hysteresis: contact from approach %g "
+	    "loading, down to %g unloading", d_in, w.d_out);
 	f = w.fmin / (M_PI * 0.25 * 54);
 	test_int(w.status, 0, "free JKR: every solve converges");
 	test_rel(f, -1.5, 0.06, "free JKR mu 3: pull-off F / (pi dgamma R)");
