@@ -16,10 +16,12 @@
 #include <unistd.h>
 
 #include "io.h"
+#include "layer.h"
 #include "solver.h"
 
-/* 2: the identity hash covers metadata, units and the missing-point mask */
-#define VERSION 2
+/* 2: the identity hash covers metadata, units and the missing-point mask;
+ * 3: the scene (boundary, kernel, effects).  Version 2 is still read. */
+#define VERSION 3
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL
 
@@ -95,6 +97,9 @@ rc_checkpoint_init(rc_checkpoint *c, const rc_grid *g, const double *p,
 		return -1;
 	memcpy(c->pressures, p, np * sizeof(double));
 	c->npressures = np;
+	c->boundary = RC_BOUNDARY_PERIODIC;
+	c->kernel = RC_KERNEL_CONTINUUM;
+	c->substrate = RC_SUBSTRATE_NONE;
 	return 0;
 }
 
@@ -335,6 +340,17 @@ rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
 	    setd(g, "checkpoint.alpha", c->alpha, err) ||
 	    rc_grid_meta_setf(g, "checkpoint.fd", err, "%d", c->fd != 0) ||
 	    rc_grid_meta_setf(g, "checkpoint.max_iter", err, "%ld", c->max_iter) ||
+	    rc_grid_meta_set(g, "checkpoint.boundary",
+	    rc_boundary_name((enum rc_boundary)c->boundary), err) ||
+	    rc_grid_meta_set(g, "checkpoint.kernel",
+	    rc_kernel_name((enum rc_kernel)c->kernel), err) ||
+	    setd(g, "checkpoint.hardness", c->hardness, err) ||
+	    setd(g, "checkpoint.thickness", c->thickness, err) ||
+	    rc_grid_meta_set(g, "checkpoint.substrate",
+	    rc_substrate_name((enum rc_substrate)c->substrate), err) ||
+	    setd(g, "checkpoint.poisson", c->poisson, err) ||
+	    setd(g, "checkpoint.adhesion", c->adhesion, err) ||
+	    setd(g, "checkpoint.range", c->range, err) ||
 	    rc_grid_meta_set(g, "checkpoint.pressure_kind",
 	    c->reduced ? "reduced" : "absolute", err) ||
 	    rc_grid_meta_set(g, "checkpoint.pressures", s, err) ||
@@ -414,6 +430,62 @@ need_long(const rc_grid *g, const char *key, long lo, long hi, long *v,
 	return 0;
 }
 
+/* A name among those parse knows (its value into *v). */
+static int
+need_name(const rc_grid *g, const char *key, int (*parse)(const char *),
+    int *v, rc_err *err)
+{
+	const char *s = need(g, key, err);
+
+	if (s == NULL)
+		return -1;
+	if ((*v = parse(s)) < 0)
+		return rc_seterr(err, "meta.%s = %s: unknown", key, s);
+	return 0;
+}
+
+static int
+substrate_parse(const char *name)
+{
+	return strcmp(name, "none") == 0 ? RC_SUBSTRATE_NONE :
+	    rc_substrate_parse(name);
+}
+
+/* The scene (version 3); a version 2 checkpoint's as rc_checkpoint_init
+ * leaves it, the boundary kind unrecorded. */
+static int
+read_scene(const rc_grid *g, long version, rc_checkpoint *c, rc_err *err)
+{
+	c->boundary = -1;
+	c->kernel = RC_KERNEL_CONTINUUM;
+	c->substrate = RC_SUBSTRATE_NONE;
+	if (version < 3)
+		return 0;
+	/* the ranges gfmd-solve accepts, and 0 for an effect that is off
+	 * (hardness: 0 or inf, no cap) */
+	if (need_name(g, "checkpoint.boundary", rc_boundary_parse, &c->boundary,
+	    err) ||
+	    need_name(g, "checkpoint.kernel", rc_kernel_parse, &c->kernel, err) ||
+	    need_name(g, "checkpoint.substrate", substrate_parse, &c->substrate,
+	    err) ||
+	    need_double(g, "checkpoint.hardness", &c->hardness, err) ||
+	    need_range(g, "checkpoint.thickness", 0, 0, HUGE_VAL, 1,
+	    &c->thickness, err) ||
+	    need_range(g, "checkpoint.poisson", -1, 1, 0.5, 0, &c->poisson,
+	    err) ||
+	    need_range(g, "checkpoint.adhesion", 0, 0, HUGE_VAL, 1,
+	    &c->adhesion, err) ||
+	    need_range(g, "checkpoint.range", 0, 0, HUGE_VAL, 1, &c->range, err))
+		return -1;
+	if (!(c->hardness >= 0))
+		return rc_seterr(err, "meta.checkpoint.hardness = %s: want 0, "
+		    "inf or a positive number",
+		    rc_grid_meta_get(g, "checkpoint.hardness"));
+	return 0;
+}
+
+/* The pressures: positive, or (with adhesion, read before) any finite
+ * value, as gfmd-solve accepts them. */
 static int
 parse_list(rc_checkpoint *c, const char *s, rc_err *err)
 {
@@ -428,8 +500,8 @@ parse_list(rc_checkpoint *c, const char *s, rc_err *err)
 		char *end;
 		double v = strtod(q, &end);
 
-		if (end == q || (*end != ',' && *end != '\0') || !(v > 0) ||
-		    !isfinite(v))
+		if (end == q || (*end != ',' && *end != '\0') ||
+		    !(v > 0 || c->adhesion > 0) || !isfinite(v))
 			return rc_seterr(err, "meta.checkpoint.pressures: bad list "
 			    "'%s'", s);
 		c->pressures[c->npressures++] = v;
@@ -459,11 +531,13 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	c->ly = g->ly;
 	if (need_long(g, "checkpoint.version", 0, LONG_MAX, &v, err) != 0)
 		goto bad;
-	if (v != VERSION) {
-		rc_seterr(err, "checkpoint version %ld, this program reads %d", v,
-		    VERSION);
+	if (v != VERSION && v != 2) {
+		rc_seterr(err, "checkpoint version %ld, this program reads 2 "
+		    "and %d", v, VERSION);
 		goto bad;
 	}
+	if (read_scene(g, v, c, err) != 0)
+		goto bad;
 	if ((s = need(g, "checkpoint.input_sum", err)) == NULL)
 		goto bad;
 	errno = 0;
@@ -679,6 +753,29 @@ rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
 	if (s->max_iter != n->max_iter)
 		return rc_seterr(err, "checkpoint has --max-iter %ld, this run %ld",
 		    s->max_iter, n->max_iter);
+	if (s->boundary >= 0 && s->boundary != n->boundary)
+		return rc_seterr(err, "checkpoint has --boundary %s, this run %s",
+		    rc_boundary_name((enum rc_boundary)s->boundary),
+		    rc_boundary_name((enum rc_boundary)n->boundary));
+	if (s->kernel != n->kernel)
+		return rc_seterr(err, "checkpoint has --kernel %s, this run %s",
+		    rc_kernel_name((enum rc_kernel)s->kernel),
+		    rc_kernel_name((enum rc_kernel)n->kernel));
+	if (!same(s->hardness, n->hardness))
+		return rc_seterr(err, "checkpoint has --hardness %.16g, this run "
+		    "%.16g (0: none)", s->hardness, n->hardness);
+	if (!same(s->thickness, n->thickness) || s->substrate != n->substrate ||
+	    !same(s->poisson, n->poisson))
+		return rc_seterr(err, "checkpoint has --thickness %.16g "
+		    "--substrate %s --poisson %.16g, this run %.16g, %s, %.16g "
+		    "(0 and none: the half space)", s->thickness,
+		    rc_substrate_name((enum rc_substrate)s->substrate), s->poisson,
+		    n->thickness, rc_substrate_name((enum rc_substrate)n->substrate),
+		    n->poisson);
+	if (!same(s->adhesion, n->adhesion) || !same(s->range, n->range))
+		return rc_seterr(err, "checkpoint has --adhesion %.16g --range "
+		    "%.16g, this run %.16g, %.16g (0: none)", s->adhesion,
+		    s->range, n->adhesion, n->range);
 	if (s->reduced != n->reduced)
 		return rc_seterr(err, "checkpoint has %s pressures, this run %s",
 		    s->reduced ? "reduced (-p)" : "absolute (--pressure-abs)",

@@ -11,8 +11,15 @@
  *                  bit patterns of its heights, its metadata, units,
  *                  periodic flag and missing-point mask), 16 hex digits
  *   method, tol, E, alpha, fd, max_iter   the options that decide the rows
+ *   boundary, kernel, hardness, thickness, substrate, poisson, adhesion,
+ *   range          the scene (--boundary, --kernel, the optional effects;
+ *                  0 or none where not asked for); since version 3 (a
+ *                  version 2 checkpoint is read as the half space with no
+ *                  effect, which gfmd-solve then refused with checkpoints,
+ *                  and an unrecorded boundary kind)
  *   pressure_kind  reduced (-p) or absolute (--pressure-abs)
  *   pressures      the full list, comma-separated, exact to the last bit
+ *                  (positive; any finite value with adhesion)
  *   next           index (0-based) of the first pressure without a row
  *   state          solving (u is a partial solve of pressures[next]) or
  *                  between (u is the solution of pressures[next - 1])
@@ -42,6 +49,10 @@ typedef struct rc_checkpoint {
 	double tol, modulus, alpha;
 	long max_iter;
 	int fd;
+	/* the scene: enum rc_boundary (-1: unrecorded, version 2), enum
+	 * rc_kernel, enum rc_substrate; 0 where an effect is off */
+	int boundary, kernel, substrate;
+	double hardness, thickness, poisson, adhesion, range;
 	int reduced;		/* 1: pressures are p*, 0: absolute p */
 	double *pressures;
 	size_t npressures;
@@ -62,7 +73,8 @@ typedef struct rc_checkpoint {
  * columns) does not. */
 uint64_t rc_checkpoint_hash(const rc_grid *indenter);
 
-/* Fill identity from the indenter and copy the pressure list; rows empty. */
+/* Fill identity from the indenter and copy the pressure list; rows empty;
+ * the scene the half space, periodic, no effect. */
 int rc_checkpoint_init(rc_checkpoint *c, const rc_grid *indenter,
     const double *pressures, size_t npressures, rc_err *err);
 void rc_checkpoint_free(rc_checkpoint *c);
@@ -97,8 +109,8 @@ void rc_checkpoint_unlock(int fd, char *lock_path);
 long rc_checkpoint_iterations_add(long done, long more);
 
 /* 0 if saved belongs to the same indenter and options as now (pressure
- * list, method, tol, E, alpha, fd, max_iter), else -1 naming the first
- * difference. */
+ * list, method, tol, E, alpha, fd, max_iter, the scene; the boundary kind
+ * only where saved records it), else -1 naming the first difference. */
 int rc_checkpoint_match(const rc_checkpoint *saved, const rc_checkpoint *now,
     rc_err *err);
 

@@ -59,9 +59,10 @@ typedef struct rc_solver_opts {
 	double poisson;
 	/* Adhesion: the exponential law of adhesion.h with work of adhesion
 	 * `adhesion' (pressure times length) and range `range' (length);
-	 * 0: none (the default).  FIRE on periodic boundaries only
-	 * (solver_fire_adh.c, gfmd-solve(1) ADHESION); the pressure may then
-	 * be zero or negative and the approach any finite value. */
+	 * 0: none (the default).  FIRE, on either boundary kind
+	 * (solver_fire_adh.c, solver_fire_adh_free.c, gfmd-solve(1)
+	 * ADHESION); the pressure may then be zero or negative and the
+	 * approach any finite value. */
 	double adhesion;
 	double range;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
@@ -127,7 +128,8 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * and time of all trials.  Periodic: delta must be below max h - <h>
  * (full contact).  Returns as rc_solver_solve. */
 /* With adhesion: any finite delta, solved directly by FIRE with the mean
- * height held (solver_fire_adh.c), which traces unstable branches too. */
+ * height (free boundaries: the rigid level) held (solver_fire_adh.c,
+ * solver_fire_adh_free.c), which traces unstable branches too. */
 int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err);
 

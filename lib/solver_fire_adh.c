@@ -243,15 +243,18 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 	res->separated = 0;
 	for (it = 0; ; it++) {
 		double mass0, aa = 0, av = 0, vv = 0, sa_f = 0, sv = 0, shift = 0;
-		double mix_v, mix_a, *a, scale;
+		double mix_v, mix_a, *a, scale, load;
 		size_t nf;
 		int restart;
 
 		adh_wall_force(w, law, p, &ps);
 		nf = n - ps.on;
 		/* p on every point of the view: the load p n over the
-		 * points that interact */
-		scale = fmax(fabs(p) * spread, law->smax);
+		 * points that interact; with the level held (mass0 > 0) the
+		 * load is the tractions' sum */
+		load = w->mass0 > 0 ? fabs(ps.sum_ku_c + ps.sum_sa_f) /
+		    w->n_act : fabs(p) * spread;
+		scale = fmax(load, law->smax);
 		residual = sqrt(ps.sum_d2 / w->n_act) / scale;
 		if (control && nf > 0)
 			p = (ps.sum_ku_c + ps.sum_sa_f) / (double)nf;

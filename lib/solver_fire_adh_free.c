@@ -211,8 +211,10 @@ rc__fire_adh_free_solve(rc_solver *s, const rc_adhesion *law, int control,
 		for (size_t j = 0; j < s->ny; j++)
 			memcpy(pad->h + j * px, s->height + j * nx,
 			    nx * sizeof(double));
+		/* contact points exactly on the wall ((h - c) + c need not
+		 * be h), the rest not below it */
 		for (k = 0; k < pad->n; k++)
-			if (pad->u[k] < pad->h[k])
+			if (pad->contact[k] || pad->u[k] < pad->h[k])
 				pad->u[k] = pad->h[k];
 		*pp = pad_finish(s, law, c);
 	}

@@ -70,7 +70,9 @@ int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
     rc_solve_result *res, rc_err *err);
 /* What that loop runs on: the operator's grid of n points, of which
  * n_act interact (the rest: h = -inf); mass0 > 0 the mean mode's mass
- * (else load control's rule, solver_fire.c).  The loop: control 0, p on
+ * when the rigid level is held (free boundaries: p = 0, the load the sum
+ * of the tractions, which then scales the residual); else load
+ * control's rule (solver_fire.c).  The loop: control 0, p on
  * every one of the n points; control 1, <u> held at target (periodic
  * only), p found.  Status as rc_solver_solve. */
 typedef struct rc__adh_view {

@@ -11,8 +11,11 @@
 #include <string.h>
 
 #include "checkpoint.h"
+#include "elastic.h"
 #include "grid.h"
 #include "io.h"
+#include "layer.h"
+#include "solver.h"
 #include "testlib.h"
 
 #define NX 8
@@ -49,6 +52,16 @@ fill(rc_checkpoint *c, const rc_grid *g)
 	c->next = 2;
 	c->solving = 1;
 	c->iterations = 777;
+	/* a scene with every key away from its default (the format does not
+	 * ask whether gfmd-solve would combine them) */
+	c->boundary = RC_BOUNDARY_FREE;
+	c->kernel = RC_KERNEL_PIXEL;
+	c->hardness = 2.0 / 3;
+	c->thickness = 1.0 / 8;
+	c->substrate = RC_SUBSTRATE_SLIP;
+	c->poisson = 0.3;
+	c->adhesion = 1e-4 / 3;
+	c->range = 0.01;
 	rc_row_init(&r);
 	for (int k = 0; k < 2; k++) {
 		rc_row_clear(&r);
@@ -104,6 +117,14 @@ round_trip(void)
 	test_true(back.next == 2 && back.solving == 1 && back.iterations == 777 &&
 	    back.max_iter == 12345 && back.fd == 1 && back.reduced == 1 &&
 	    strcmp(back.method, "fire") == 0, "progress and options back");
+	test_true(back.boundary == RC_BOUNDARY_FREE &&
+	    back.kernel == RC_KERNEL_PIXEL && back.substrate == RC_SUBSTRATE_SLIP &&
+	    memcmp(&back.hardness, &c.hardness, sizeof(double)) == 0 &&
+	    memcmp(&back.thickness, &c.thickness, sizeof(double)) == 0 &&
+	    memcmp(&back.poisson, &c.poisson, sizeof(double)) == 0 &&
+	    memcmp(&back.adhesion, &c.adhesion, sizeof(double)) == 0 &&
+	    memcmp(&back.range, &c.range, sizeof(double)) == 0,
+	    "the scene back bit for bit");
 	test_int((long long)back.nrows, 2, "two finished rows back");
 	rc_row_init(&r0);
 	rc_row_init(&r1);
@@ -188,6 +209,43 @@ identity(void)
 	d.nx = NX + 1;
 	test_int(rc_checkpoint_match(&c, &d, &err), -1, "other grid: refused");
 	d.nx = NX;
+	/* the scene: each option named */
+	{
+		struct { int *i; double *v; const char *name; } f[] = {
+			{ &d.boundary, NULL, "--boundary" },
+			{ &d.kernel, NULL, "--kernel" },
+			{ &d.substrate, NULL, "--substrate" },
+			{ NULL, &d.hardness, "--hardness" },
+			{ NULL, &d.thickness, "--thickness" },
+			{ NULL, &d.poisson, "--poisson" },
+			{ NULL, &d.adhesion, "--adhesion" },
+			{ NULL, &d.range, "--range" },
+		};
+
+		for (size_t k = 0; k < sizeof(f) / sizeof(f[0]); k++) {
+			int i0 = f[k].i ? *f[k].i : 0;
+			double v0 = f[k].v ? *f[k].v : 0;
+
+			if (f[k].i)
+				*f[k].i = !i0;
+			else
+				*f[k].v = nextafter(v0, 1);
+			test_int(rc_checkpoint_match(&c, &d, &err), -1, "other %s: "
+			    "refused", f[k].name);
+			test_true(strstr(err.msg, f[k].name) != NULL, "message: %s",
+			    err.msg);
+			if (f[k].i)
+				*f[k].i = i0;
+			else
+				*f[k].v = v0;
+		}
+	}
+	/* a version 2 checkpoint does not record the boundary kind: any */
+	c.boundary = -1;
+	d.boundary = RC_BOUNDARY_PERIODIC;
+	test_int(rc_checkpoint_match(&c, &d, &err), 0, "boundary unrecorded: "
+	    "accepted");
+	c.boundary = d.boundary = RC_BOUNDARY_FREE;
 	test_int(rc_checkpoint_match(&c, &d, &err), 0, "all restored: accepted");
 	rc_checkpoint_free(&d);
 	rc_checkpoint_free(&c);
@@ -223,6 +281,40 @@ refused(const char *key, const char *val, const char *want)
 	    key, val ? val : "(none)", err.msg, want);
 }
 
+/* A version 2 checkpoint (before the scene was recorded): read, as the
+ * half space with no effect and an unrecorded boundary kind. */
+static void
+version2(void)
+{
+	static const char *keys[] = { "boundary", "kernel", "hardness",
+	    "thickness", "substrate", "poisson", "adhesion", "range" };
+	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_checkpoint c;
+	rc_err err;
+	char key[64];
+
+	if (g == NULL) {
+		test_true(0, "re-read a.ck");
+		return;
+	}
+	rc_grid_meta_set(g, "checkpoint.version", "2", &err);
+	for (size_t k = 0; k < sizeof(keys) / sizeof(keys[0]); k++) {
+		snprintf(key, sizeof(key), "checkpoint.%s", keys[k]);
+		rc_grid_meta_unset(g, key);
+	}
+	rc_grid_write(g, test_slot_path(1, "v2.ck"), RC_FMT_SURF, &err);
+	rc_grid_free(g);
+	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "v2.ck"), &err), 0,
+	    "version 2: read (%s)", err.msg);
+	test_true(c.boundary == -1 && c.kernel == RC_KERNEL_CONTINUUM &&
+	    c.substrate == RC_SUBSTRATE_NONE && c.hardness == 0 &&
+	    c.thickness == 0 && c.poisson == 0 && c.adhesion == 0 &&
+	    c.range == 0, "version 2: the half space, no effect, boundary "
+	    "unrecorded");
+	rc_checkpoint_free(&c);
+	rc_grid_free(u);
+}
+
 static void
 bad_files(void)
 {
@@ -235,12 +327,24 @@ bad_files(void)
 	long size;
 
 	fill(&c, g);
+	/* without adhesion: the pressures must be positive */
+	c.adhesion = c.range = 0;
 	test_int(rc_checkpoint_write(&c, z, test_slot_path(0, "a.ck"), &err), 0, "write");
 	rc_checkpoint_free(&c);
 	rc_grid_free(g);
 
 	/* Range checks: each field just outside what gfmd-solve accepts. */
 	refused("checkpoint.version", "1", "version");
+	refused("checkpoint.version", "4", "version");
+	refused("checkpoint.boundary", "torus", "checkpoint.boundary");
+	refused("checkpoint.boundary", NULL, "checkpoint.boundary");
+	refused("checkpoint.kernel", "sinc", "checkpoint.kernel");
+	refused("checkpoint.substrate", "glued", "checkpoint.substrate");
+	refused("checkpoint.hardness", "-1", "checkpoint.hardness");
+	refused("checkpoint.thickness", "-0.5", "checkpoint.thickness");
+	refused("checkpoint.poisson", "0.6", "checkpoint.poisson");
+	refused("checkpoint.adhesion", "inf", "checkpoint.adhesion");
+	refused("checkpoint.range", "-1", "checkpoint.range");
 	refused("checkpoint.input_sum", "0123", "16 hex digits");
 	refused("checkpoint.method", "newton", "method");
 	refused("checkpoint.tol", "0", "checkpoint.tol");
@@ -263,6 +367,22 @@ bad_files(void)
 	refused("checkpoint.types", "nn", "types");
 	refused("checkpoint.row.1", NULL, "row.1");
 	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
+	version2();
+	/* with adhesion any finite pressure (gfmd-solve takes them then) */
+	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
+	if (g != NULL) {
+		rc_grid_meta_set(g, "checkpoint.adhesion", "0.001", &err);
+		rc_grid_meta_set(g, "checkpoint.pressures", "0.1,-1,0", &err);
+		rc_grid_write(g, test_slot_path(1, "adh.ck"), RC_FMT_SURF, &err);
+		rc_grid_free(g);
+		test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "adh.ck"),
+		    &err), 0, "with adhesion: pressures 0.1,-1,0 read (%s)",
+		    err.msg);
+		test_true(c.npressures == 3 && c.pressures[1] == -1 &&
+		    c.pressures[2] == 0, "with adhesion: the pressures back");
+		rc_checkpoint_free(&c);
+		rc_grid_free(u);
+	}
 
 	/* The grid itself: a height field, a missing (NaN) value. */
 	for (int t = 0; t < 2; t++) {

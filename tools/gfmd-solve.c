@@ -347,6 +347,22 @@ resume_defaults(struct run *r)
 		o->fd = saved->fd;
 	if (!o->given_max_iter)
 		o->so.max_iter = saved->max_iter;
+	/* the scene; the boundary kind only where recorded (version 3) */
+	if (o->boundary < 0 && saved->boundary >= 0)
+		o->boundary = saved->boundary;
+	if (!o->given_kernel)
+		o->so.kernel = (enum rc_kernel)saved->kernel;
+	if (!o->given_hardness)
+		o->so.hardness = saved->hardness;
+	if (!o->given_layer) {
+		o->so.thickness = saved->thickness;
+		o->so.substrate = (enum rc_substrate)saved->substrate;
+		o->so.poisson = saved->poisson;
+	}
+	if (!o->given_adhesion) {
+		o->so.adhesion = saved->adhesion;
+		o->so.range = saved->range;
+	}
 	if (!o->nreduced && !o->nabsolute) {
 		double *copy = malloc(saved->npressures * sizeof(double));
 
@@ -362,6 +378,15 @@ resume_defaults(struct run *r)
 		}
 		r->npressures = saved->npressures;
 	}
+}
+
+/* Free boundaries: the grid's periodic flag decides unless --boundary
+ * is given (or restored from a checkpoint). */
+static enum rc_boundary
+run_boundary(const struct run *r)
+{
+	return r->o.boundary >= 0 ? (enum rc_boundary)r->o.boundary :
+	    r->h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
 }
 
 /* The checkpoint this run writes, and the one it resumes checked
@@ -384,6 +409,14 @@ checkpoint_setup(struct run *r)
 	ck->alpha = o->alpha;
 	ck->fd = o->fd;
 	ck->max_iter = o->so.max_iter;
+	ck->boundary = (int)run_boundary(r);
+	ck->kernel = (int)o->so.kernel;
+	ck->hardness = o->so.hardness;
+	ck->thickness = o->so.thickness;
+	ck->substrate = (int)o->so.substrate;
+	ck->poisson = o->so.poisson;
+	ck->adhesion = o->so.adhesion;
+	ck->range = o->so.range;
 	ck->reduced = o->nreduced != 0;
 	if (o->resume_path == NULL)
 		return;
@@ -424,10 +457,7 @@ indenter_setup(struct run *r)
 	double lo = INFINITY, hi = -INFINITY;
 	rc_err err;
 
-	/* Free boundaries: the grid's periodic flag decides unless
-	 * --boundary is given. */
-	o->so.boundary = o->boundary >= 0 ? (enum rc_boundary)o->boundary :
-	    h->periodic ? RC_BOUNDARY_PERIODIC : RC_BOUNDARY_FREE;
+	o->so.boundary = run_boundary(r);
 	if (o->so.boundary == RC_BOUNDARY_PERIODIC)
 		tool_check_wrap(&r->t, h, r->input);
 	else if (o->given_kernel && o->so.kernel != RC_KERNEL_PIXEL)

@@ -224,9 +224,6 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 	if (o->given_layer && o->napproach)
 		tool_bad(t, "--adhesion with --thickness: load control (-p, "
 		    "--pressure-abs) only, not --approach");
-	if (o->ck_path != NULL || o->resume_path != NULL)
-		tool_bad(t, "--adhesion: checkpoints do not record the adhesion; "
-		    "run without --checkpoint and --resume");
 }
 
 /* Long: every check between options in one place, so that all problems
@@ -256,9 +253,6 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 		if (o->napproach)
 			tool_bad(t, "--hardness: with -p or --pressure-abs only, "
 			    "not --approach");
-		if (o->ck_path != NULL || o->resume_path != NULL)
-			tool_bad(t, "--hardness: checkpoints do not record the "
-			    "hardness; run without --checkpoint and --resume");
 	}
 	if (o->given_layer) {
 		if (!(o->so.thickness > 0))
@@ -276,9 +270,6 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 			tool_bad(t, "--thickness: a layer needs periodic "
 			    "boundaries (its response is known per Fourier "
 			    "mode only); drop --boundary free");
-		if (o->ck_path != NULL || o->resume_path != NULL)
-			tool_bad(t, "--thickness: checkpoints do not record the "
-			    "layer; run without --checkpoint and --resume");
 	}
 	if (o->given_kernel) {
 		if (o->boundary == RC_BOUNDARY_FREE &&
@@ -291,10 +282,6 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 			tool_bad(t, "--kernel pixel: a layer (--thickness) has the "
 			    "continuum kernel only (the pixel kernel would need "
 			    "the layer's factor on every image of its sum)");
-		if (o->so.kernel == RC_KERNEL_PIXEL &&
-		    (o->ck_path != NULL || o->resume_path != NULL))
-			tool_bad(t, "--kernel pixel: checkpoints do not record the "
-			    "kernel; run without --checkpoint and --resume");
 	}
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");

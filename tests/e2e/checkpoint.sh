@@ -153,6 +153,64 @@ if [ -f ck3.surf ]; then
 	check "resume without --checkpoint keeps the file" test -f ck3.surf
 fi
 
+# --- The scene is recorded (checkpoint version 3): a sphere on a
+# periodic map solved with --boundary free and adhesion, loads going
+# down past zero.  The checkpoint saved after a pressure is copied while
+# the run goes on; resumed from the copy without any option, the run
+# takes the boundary kind and the adhesion from it: its rows equal the
+# uninterrupted ones (n_c within a point, the energy to 1e-6 as above).
+# A bigger grid is tried if the run ended before the copy was made.
+SC="--boundary free --adhesion 0.25 --range 0.5 --tol 1e-8"
+SP=0.004,0.002,0,-0.002,-0.003
+copied=0
+for n in 128 256; do
+	surfgen -q -n $n -L $n --type harmonic --radius $((n / 2)) -o sph$n.surf
+	# shellcheck disable=SC2086
+	gfmd-solve -j 1 -q $SC --pressure-abs $SP -o sref.tsv sph$n.surf
+	rm -f sck.surf scopy.surf
+	# shellcheck disable=SC2086
+	gfmd-solve -j 1 -q $SC --pressure-abs $SP --checkpoint sck.surf \
+	    -o spart.tsv sph$n.surf & pid=$!
+	while kill -0 $pid 2>/dev/null && [ ! -s scopy.surf ]; do
+		cp sck.surf scopy.surf 2>/dev/null
+		sleep 0.02
+	done
+	wait $pid
+	[ -s scopy.surf ] && { copied=1; break; }
+done
+if [ $copied = 1 ]; then
+	check "scene: the checkpoint records free boundaries" \
+	    grep -a -q '^meta.checkpoint.boundary = free$' scopy.surf
+	check "scene: and the adhesion" grep -a -q '^meta.checkpoint.adhesion = 0.25$' scopy.surf
+	gfmd-solve -j 1 -q --resume scopy.surf sph$n.surf > sres.tsv 2>err
+	check_rel "scene: resumed with no option: exit 0 ($(head -c 150 err))" $? 0 0
+	paste sref.tsv sres.tsv | awk -F'\t' '
+	NR == 1 { h = NF / 2; for (i = 1; i <= h; i++) c[$i] = i; next }
+	{ rows++
+	  if ($c["p"] != $(c["p"] + h)) bad++
+	  if ($(c["boundary"] + h) != "free" || $(c["adhesion"] + h) != 0.25) bad++
+	  d = $c["n_c"] - $(c["n_c"] + h); if (d < 0) d = -d; if (d > 1) bad++
+	  e = $c["elastic_energy"]; f = $(c["elastic_energy"] + h); r = (e - f) / e
+	  if (r < 0) r = -r; if (r > 1e-6) bad++ }
+	END { exit !(rows == 5 && bad == 0) }'
+	check "scene: resumed rows = uninterrupted rows (free, adhesive)" test $? -eq 0
+	gfmd-solve -q --boundary periodic --resume scopy.surf sph$n.surf > /dev/null 2>err
+	check "scene: resume with another boundary: named ($(head -c 150 err))" \
+	    grep -q 'checkpoint has --boundary free, this run periodic' err
+	gfmd-solve -q --adhesion 0.2 --range 0.5 --resume scopy.surf sph$n.surf > /dev/null 2>err
+	check "scene: resume with another adhesion: named ($(head -c 150 err))" \
+	    grep -q 'checkpoint has --adhesion 0.25' err
+else
+	skip 5 "scene: every run ended before its checkpoint could be copied"
+fi
+# The effects take checkpoints now (refused while the scene was not
+# recorded): a plastic sweep with one gives the rows of one without.
+gfmd-solve -j 1 -q --method cg --hardness 0.5 -p 0.05,0.1 -o h1.tsv s256.surf
+gfmd-solve -j 1 -q --method cg --hardness 0.5 -p 0.05,0.1 --checkpoint hck.surf \
+    -o h2.tsv s256.surf
+check "--hardness with --checkpoint: accepted, the same rows" \
+    test "$(cut -f 1-20 h1.tsv)" = "$(cut -f 1-20 h2.tsv)"
+
 # --- Usage and bad checkpoints.
 check_status "--checkpoint-every without --checkpoint: exit 2" 2 gfmd-solve -p 0.1 --checkpoint-every 1 s256.surf
 check_status "--checkpoint-every 0: exit 2" 2 gfmd-solve -p 0.1 --checkpoint x.surf --checkpoint-every 0 s256.surf

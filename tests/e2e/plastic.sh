@@ -46,7 +46,7 @@ check_status "--hardness with --method fire" 2 gfmd-solve --method fire --hardne
 check_status "--hardness 0" 2 gfmd-solve --method cg --hardness 0 -p 0.1 "$T/r.surf"
 check_status "--hardness -1" 2 gfmd-solve --method cg --hardness -1 -p 0.1 "$T/r.surf"
 check_status "--hardness with --approach" 2 gfmd-solve --method cg --hardness 1 --approach 0.01 "$T/r.surf"
-check_status "--hardness with --checkpoint" 2 gfmd-solve --method cg --hardness 1 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
+check_status "--hardness with --checkpoint: accepted (recorded)" 0 gfmd-solve -q --method cg --hardness 1 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
 check_status "p > H" 1 gfmd-solve --method cg --hardness 0.01 --pressure-abs 0.02 "$T/r.surf"
 check "p > H: the message says why" grep -q "exceeds the hardness" "$T/stderr"
 
