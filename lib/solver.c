@@ -220,8 +220,11 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	for (size_t k = 0; k < n; k++)
 		if (s->height[k] > s->top)
 			s->top = s->height[k];
+	/* scratch: G t of the free CG and the free FIRE on pressures (the
+	 * adhesive free FIRE has padded fields of its own) */
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
 	    rc__cg_alloc(s, err)) != 0 || (s->free_bc && s->scratch == NULL &&
+	    !rc_solver_opts_adhesive(o) &&
 	    (s->scratch = fftw_alloc_real(n)) == NULL)) {
 		if (s->free_bc && s->scratch == NULL)
 			rc_seterr(err, "out of memory (asked for %zu bytes)",

@@ -37,7 +37,7 @@
  * (elastic.h: its buffers and table) and five padded fields (132 bytes
  * per point of the area), besides the solver's own fields; the
  * compliance's own transform (elastic_free.h) is released once kappa is
- * made.  Measured (make bench, fire-adh, free): 253 bytes per point; 79
+ * made.  Measured (make bench, fire-adh, free): 245 bytes per point; 79
  * and 56 iterations at 256^2 and 512^2 (the free FIRE on pressures
  * without adhesion: 58 and 61).
  */
