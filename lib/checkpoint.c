@@ -21,7 +21,7 @@
 
 /* 2: the identity hash covers metadata, units and the missing-point mask;
  * 3: the scene (boundary, kernel, effects).  Version 2 is still read. */
-#define VERSION 3
+#define VERSION 4
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL
 
@@ -351,6 +351,8 @@ rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
 	    setd(g, "checkpoint.poisson", c->poisson, err) ||
 	    setd(g, "checkpoint.adhesion", c->adhesion, err) ||
 	    setd(g, "checkpoint.range", c->range, err) ||
+	    rc_grid_meta_set(g, "checkpoint.law",
+	    rc_adhesion_law_name((enum rc_adhesion_law)c->law), err) ||
 	    rc_grid_meta_set(g, "checkpoint.pressure_kind",
 	    c->reduced ? "reduced" : "absolute", err) ||
 	    rc_grid_meta_set(g, "checkpoint.pressures", s, err) ||
@@ -451,16 +453,21 @@ substrate_parse(const char *name)
 	    rc_substrate_parse(name);
 }
 
-/* The scene (version 3); a version 2 checkpoint's as rc_checkpoint_init
- * leaves it, the boundary kind unrecorded. */
+/* The scene (version 3, the adhesive law since 4); a version 2
+ * checkpoint's as rc_checkpoint_init leaves it, the boundary kind
+ * unrecorded; before 4 the law was the exponential one. */
 static int
 read_scene(const rc_grid *g, long version, rc_checkpoint *c, rc_err *err)
 {
 	c->boundary = -1;
 	c->kernel = RC_KERNEL_CONTINUUM;
 	c->substrate = RC_SUBSTRATE_NONE;
+	c->law = RC_ADHESION_EXPONENTIAL;
 	if (version < 3)
 		return 0;
+	if (version >= 4 && need_name(g, "checkpoint.law",
+	    rc_adhesion_law_parse, &c->law, err))
+		return -1;
 	/* the ranges gfmd-solve accepts, and 0 for an effect that is off
 	 * (hardness: 0 or inf, no cap) */
 	if (need_name(g, "checkpoint.boundary", rc_boundary_parse, &c->boundary,
@@ -531,9 +538,9 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	c->ly = g->ly;
 	if (need_long(g, "checkpoint.version", 0, LONG_MAX, &v, err) != 0)
 		goto bad;
-	if (v != VERSION && v != 2) {
+	if (v < 2 || v > VERSION) {
 		rc_seterr(err, "checkpoint version %ld, this program reads 2 "
-		    "and %d", v, VERSION);
+		    "to %d", v, VERSION);
 		goto bad;
 	}
 	if (read_scene(g, v, c, err) != 0)
@@ -776,6 +783,10 @@ rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
 		return rc_seterr(err, "checkpoint has --adhesion %.16g --range "
 		    "%.16g, this run %.16g, %.16g (0: none)", s->adhesion,
 		    s->range, n->adhesion, n->range);
+	if (s->law != n->law)
+		return rc_seterr(err, "checkpoint has --law %s, this run %s",
+		    rc_adhesion_law_name((enum rc_adhesion_law)s->law),
+		    rc_adhesion_law_name((enum rc_adhesion_law)n->law));
 	if (s->reduced != n->reduced)
 		return rc_seterr(err, "checkpoint has %s pressures, this run %s",
 		    s->reduced ? "reduced (-p)" : "absolute (--pressure-abs)",

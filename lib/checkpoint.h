@@ -6,7 +6,7 @@
  * A checkpoint is a native .surf grid (surf(5)) of the elastic surface
  * height u of the solve in progress (or of the last finished one), whose
  * metadata, all under "checkpoint.", say what it belongs to:
- *   version        1
+ *   version        4
  *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly, the
  *                  bit patterns of its heights, its metadata, units,
  *                  periodic flag and missing-point mask), 16 hex digits
@@ -17,6 +17,9 @@
  *                  version 2 checkpoint is read as the half space with no
  *                  effect, which gfmd-solve then refused with checkpoints,
  *                  and an unrecorded boundary kind)
+ *   law            the adhesive law (adhesion.h: exponential or dugdale;
+ *                  exponential without adhesion); since version 4 (older
+ *                  checkpoints: exponential, the only law then)
  *   pressure_kind  reduced (-p) or absolute (--pressure-abs)
  *   pressures      the full list, comma-separated, exact to the last bit
  *                  (positive; any finite value with adhesion)
@@ -53,6 +56,7 @@ typedef struct rc_checkpoint {
 	 * rc_kernel, enum rc_substrate; 0 where an effect is off */
 	int boundary, kernel, substrate;
 	double hardness, thickness, poisson, adhesion, range;
+	int law;		/* enum rc_adhesion_law */
 	int reduced;		/* 1: pressures are p*, 0: absolute p */
 	double *pressures;
 	size_t npressures;

@@ -129,6 +129,10 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		    "positive, finite range");
 		return NULL;
 	}
+	if (rc_adhesion_law_name(o->adhesion_law) == NULL) {
+		rc_seterr(err, "unknown adhesive law %d", (int)o->adhesion_law);
+		return NULL;
+	}
 	if (rc_solver_opts_adhesive(o) && (o->method != RC_METHOD_FIRE ||
 	    rc_solver_opts_plastic(o))) {
 		rc_seterr(err, "adhesion needs the FIRE method (--method fire) "

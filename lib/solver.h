@@ -20,6 +20,7 @@
 #ifndef RC_SOLVER_H
 #define RC_SOLVER_H
 
+#include "adhesion.h"
 #include "elastic.h"
 #include "grid.h"
 #include "layer.h"
@@ -57,14 +58,17 @@ typedef struct rc_solver_opts {
 	double thickness;
 	enum rc_substrate substrate;
 	double poisson;
-	/* Adhesion: the exponential law of adhesion.h with work of adhesion
-	 * `adhesion' (pressure times length) and range `range' (length);
+	/* Adhesion: the law `adhesion_law' of adhesion.h (exponential, the
+	 * default, or Dugdale's cohesive zone) with work of adhesion
+	 * `adhesion' (pressure times length) and range `range' (length:
+	 * the exponential's decay length, Dugdale's critical opening);
 	 * 0: none (the default).  FIRE, on either boundary kind
 	 * (solver_fire_adh.c, solver_fire_adh_free.c, gfmd-solve(1)
 	 * ADHESION); the pressure may then be zero or negative and the
 	 * approach any finite value. */
 	double adhesion;
 	double range;
+	enum rc_adhesion_law adhesion_law;
 	double tol;		/* scale-free convergence tolerance (see the .c) */
 	long max_iter;		/* per solve */
 	/* FFT planning effort (fft.h); RC_FFT_ESTIMATE by default.  The MPI

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_fire_adh.c - FIRE-GFMD with the adhesive law of adhesion.h on
+/* solver_fire_adh.c - FIRE-GFMD with an adhesive law of adhesion.h on
  * periodic boundaries (a half space or a layer; free boundaries run the
  * same loop on a padded grid, solver_fire_adh_free.c): the loop of
  * solver_fire.c with the adhesive traction in the wall pass, kept apart so
@@ -27,8 +27,9 @@
  * Load control (control 0): the mean mode has the mass of solver_fire.c
  * (from the contact count).  The body separates when no point is in
  * contact and the tension -p exceeds the strongest attraction left,
- * sigma_max exp(-min g / rho): then every point pulls less than the load
- * and the mean accelerates away; the solve stops there with
+ * rc_adhesion_tension_beyond(min g) (exponential: sigma_max exp(-min g /
+ * rho)): then every point pulls less than the load and the mean
+ * accelerates away; the solve stops there with
  * res->separated = 1 (returns 1).
  *
  * Displacement control (control 1): <u> = max h - delta is held (the
@@ -42,8 +43,13 @@
  * load-controlled curve is stable at fixed approach.  The start shifts the
  * warm state to the new mean (bisection on the shift with the clamp).
  *
+ * Dugdale's law: its force jumps from -sigma_max to 0 at g = rho, where
+ * no equilibrium point sits; the loop runs unchanged on the exact law and
+ * converges in about as many iterations as on the exponential one
+ * (tests/test_adhesion.c).
+ *
  * Cost per iteration: that of solver_fire.c plus one exp per point within
- * RC_ADH_CUTOFF ranges of the wall (displacement control: one more O(N)
+ * RC_ADH_CUTOFF ranges of the wall (Dugdale: a comparison) (displacement control: one more O(N)
  * pass for the mean).  Memory: none beyond FIRE's.
  *
  * The loop runs on a view (rc__adh_view, solver_impl.h) of the grid: the
@@ -263,7 +269,7 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 			break;
 		}
 		if (!control && ps.on == 0 && p < 0 &&
-		    law->smax * exp(-ps.gmin / law->range) < -p * spread) {
+		    rc_adhesion_tension_beyond(law, ps.gmin) < -p * spread) {
 			res->separated = 1;
 			break;
 		}
@@ -339,7 +345,8 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
 	size_t k;
 	int r;
 
-	if (rc_adhesion_init(&law, s->opts.adhesion, s->opts.range) != 0)
+	if (rc_adhesion_init(&law, s->opts.adhesion_law, s->opts.adhesion,
+	    s->opts.range) != 0)
 		return rc_seterr(err, "adhesion %g, range %g: want both positive "
 		    "and finite", s->opts.adhesion, s->opts.range);
 	if (s->free_bc)

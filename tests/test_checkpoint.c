@@ -62,6 +62,7 @@ fill(rc_checkpoint *c, const rc_grid *g)
 	c->poisson = 0.3;
 	c->adhesion = 1e-4 / 3;
 	c->range = 0.01;
+	c->law = RC_ADHESION_DUGDALE;
 	rc_row_init(&r);
 	for (int k = 0; k < 2; k++) {
 		rc_row_clear(&r);
@@ -123,8 +124,8 @@ round_trip(void)
 	    memcmp(&back.thickness, &c.thickness, sizeof(double)) == 0 &&
 	    memcmp(&back.poisson, &c.poisson, sizeof(double)) == 0 &&
 	    memcmp(&back.adhesion, &c.adhesion, sizeof(double)) == 0 &&
-	    memcmp(&back.range, &c.range, sizeof(double)) == 0,
-	    "the scene back bit for bit");
+	    memcmp(&back.range, &c.range, sizeof(double)) == 0 &&
+	    back.law == RC_ADHESION_DUGDALE, "the scene back bit for bit");
 	test_int((long long)back.nrows, 2, "two finished rows back");
 	rc_row_init(&r0);
 	rc_row_init(&r1);
@@ -215,6 +216,7 @@ identity(void)
 			{ &d.boundary, NULL, "--boundary" },
 			{ &d.kernel, NULL, "--kernel" },
 			{ &d.substrate, NULL, "--substrate" },
+			{ &d.law, NULL, "--law" },
 			{ NULL, &d.hardness, "--hardness" },
 			{ NULL, &d.thickness, "--thickness" },
 			{ NULL, &d.poisson, "--poisson" },
@@ -281,13 +283,43 @@ refused(const char *key, const char *val, const char *want)
 	    key, val ? val : "(none)", err.msg, want);
 }
 
+/* A version 3 checkpoint (before the adhesive law was recorded): read,
+ * with the exponential law, the only one then. */
+static void
+version3(void)
+{
+	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_checkpoint c;
+	rc_err err;
+
+	if (g == NULL) {
+		test_true(0, "re-read a.ck");
+		return;
+	}
+	rc_grid_meta_set(g, "checkpoint.version", "3", &err);
+	rc_grid_meta_set(g, "checkpoint.law", "dugdale", &err);
+	rc_grid_write(g, test_slot_path(1, "v3.ck"), RC_FMT_SURF, &err);
+	rc_grid_meta_unset(g, "checkpoint.law");
+	rc_grid_write(g, test_slot_path(1, "v3b.ck"), RC_FMT_SURF, &err);
+	rc_grid_free(g);
+	for (int k = 0; k < 2; k++) {
+		test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, k ? "v3b.ck" :
+		    "v3.ck"), &err), 0, "version 3: read (%s)", err.msg);
+		test_int(c.law, RC_ADHESION_EXPONENTIAL, "version 3: the "
+		    "exponential law (a law key %s ignored)", k ? "absent" :
+		    "dugdale");
+		rc_checkpoint_free(&c);
+		rc_grid_free(u);
+	}
+}
+
 /* A version 2 checkpoint (before the scene was recorded): read, as the
  * half space with no effect and an unrecorded boundary kind. */
 static void
 version2(void)
 {
 	static const char *keys[] = { "boundary", "kernel", "hardness",
-	    "thickness", "substrate", "poisson", "adhesion", "range" };
+	    "thickness", "substrate", "poisson", "adhesion", "range", "law" };
 	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
 	rc_checkpoint c;
 	rc_err err;
@@ -335,7 +367,9 @@ bad_files(void)
 
 	/* Range checks: each field just outside what gfmd-solve accepts. */
 	refused("checkpoint.version", "1", "version");
-	refused("checkpoint.version", "4", "version");
+	refused("checkpoint.version", "5", "version");
+	refused("checkpoint.law", "linear", "checkpoint.law");
+	refused("checkpoint.law", NULL, "checkpoint.law");
 	refused("checkpoint.boundary", "torus", "checkpoint.boundary");
 	refused("checkpoint.boundary", NULL, "checkpoint.boundary");
 	refused("checkpoint.kernel", "sinc", "checkpoint.kernel");
@@ -368,6 +402,7 @@ bad_files(void)
 	refused("checkpoint.row.1", NULL, "row.1");
 	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
 	version2();
+	version3();
 	/* with adhesion any finite pressure (gfmd-solve takes them then) */
 	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
 	if (g != NULL) {

@@ -156,7 +156,7 @@ usage(void)
 "           [-E MODULUS] [--boundary periodic|free] [--method fire|cg] [--hardness H]\n"
 "           [--kernel continuum|pixel]\n"
 "           [--thickness D --poisson NU [--substrate bonded|slip]]\n"
-"           [--adhesion DGAMMA --range RHO]\n"
+"           [--adhesion DGAMMA --range RHO [--law exponential|dugdale]]\n"
 "           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
@@ -187,10 +187,13 @@ usage(void)
 "  --substrate bonded|slip  the layer's interface with the substrate: bonded\n"
 "                       (default) or frictionless\n"
 "  --adhesion DGAMMA    adhesion: work of adhesion DGAMMA (units of E* times\n"
-"                       length) of the exponential law -(DGAMMA/RHO)\n"
-"                       exp(-gap/RHO) (FIRE; pressures and approaches may\n"
-"                       then be zero or negative; default none)\n"
+"                       length) of the law of --law (FIRE; pressures and\n"
+"                       approaches may then be zero or negative; default\n"
+"                       none)\n"
 "  --range RHO          the adhesive law's range (length units)\n"
+"  --law exponential|dugdale  the adhesive law: the tension\n"
+"                       (DGAMMA/RHO) exp(-gap/RHO) (default), or Dugdale's\n"
+"                       DGAMMA/RHO up to the opening RHO and none beyond\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
@@ -364,6 +367,8 @@ resume_defaults(struct run *r)
 		o->so.adhesion = saved->adhesion;
 		o->so.range = saved->range;
 	}
+	if (!o->given_law)
+		o->so.adhesion_law = (enum rc_adhesion_law)saved->law;
 	if (!o->nreduced && !o->nabsolute) {
 		double *copy = malloc(saved->npressures * sizeof(double));
 
@@ -418,6 +423,7 @@ checkpoint_setup(struct run *r)
 	ck->poisson = o->so.poisson;
 	ck->adhesion = o->so.adhesion;
 	ck->range = o->so.range;
+	ck->law = (int)o->so.adhesion_law;
 	ck->reduced = o->nreduced != 0;
 	if (o->resume_path == NULL)
 		return;
@@ -738,6 +744,8 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .thickness = o->so.thickness,
 		    .substrate = o->so.substrate, .poisson = o->so.poisson,
 		    .adhesion = o->so.adhesion, .range = o->so.range,
+		    .law = rc_solver_opts_adhesive(&o->so) ?
+		    rc_adhesion_law_name(o->so.adhesion_law) : "none",
 		    .p_adh = rc_solver_adhesive_pressure(s),
 		    .a_attr = rc_solver_attractive_fraction(s),
 		    .l_adh_dx = r->l_adh_dx, .separated = res->separated,

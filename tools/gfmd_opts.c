@@ -139,6 +139,16 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 			tool_bad(t, "--range %s: want a positive length", arg);
 		o->given_adhesion = 1;
 		break;
+	case OPT_LAW: {
+		int law = rc_adhesion_law_parse(arg);
+
+		if (law < 0)
+			tool_bad(t, "--law %s: want exponential or dugdale", arg);
+		else
+			o->so.adhesion_law = (enum rc_adhesion_law)law;
+		o->given_law = 1;
+		break;
+	}
 	case 'E':
 		if (tool_double(t, "-E", arg, &o->modulus) == 0 && !(o->modulus > 0))
 			tool_bad(t, "-E %s: the contact modulus must be positive", arg);
@@ -237,6 +247,9 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	    o->resume_path == NULL)
 		tool_bad(t, "no load: give -p P[,P...], --pressure-abs P[,P...] or "
 		    "--approach D[,D...]");
+	if (o->given_law && !o->given_adhesion && o->resume_path == NULL)
+		tool_bad(t, "--law: the adhesive law of --adhesion DGAMMA "
+		    "--range RHO; give them too");
 	if (!o->given_adhesion) {
 		positive_list(t, "-p", o->reduced, o->nreduced);
 		positive_list(t, "--pressure-abs", o->absolute, o->nabsolute);

@@ -33,7 +33,8 @@ enum {
 	OPT_POISSON,
 	OPT_KERNEL,
 	OPT_ADHESION,
-	OPT_RANGE
+	OPT_RANGE,
+	OPT_LAW
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -64,6 +65,7 @@ enum {
 	{ "kernel", required_argument, NULL, OPT_KERNEL }, \
 	{ "adhesion", required_argument, NULL, OPT_ADHESION }, \
 	{ "range", required_argument, NULL, OPT_RANGE }, \
+	{ "law", required_argument, NULL, OPT_LAW }, \
 	{ "json", no_argument, NULL, OPT_JSON }, \
 	{ "pretty", no_argument, NULL, OPT_PRETTY }, \
 	{ "png", required_argument, NULL, OPT_PNG }, \
@@ -94,6 +96,7 @@ struct gfmd_opts {
 	int given_max_iter;
 	int given_kernel;
 	int given_adhesion;		/* --adhesion or --range */
+	int given_law;			/* --law */
 };
 
 void gfmd_opts_init(struct gfmd_opts *o);

@@ -24,6 +24,7 @@ gfmd_result_row(rc_row *row, const struct gfmd_row *in)
 	    in->poisson) ||
 	    rc_row_num(row, "adhesion", in->adhesion) ||
 	    rc_row_num(row, "range", in->range) ||
+	    rc_row_str(row, "law", in->law ? in->law : "none") ||
 	    rc_row_num(row, "p_adh", in->p_adh) ||
 	    rc_row_num(row, "a_attr", in->a_attr) ||
 	    rc_row_num(row, "l_adh_dx", in->l_adh_dx) ||

@@ -32,6 +32,7 @@ struct gfmd_row {
 	enum rc_substrate substrate;	/* RC_SUBSTRATE_NONE: a half space */
 	double poisson;			/* the layer's; 0 for a half space */
 	double adhesion, range;		/* the adhesive law's; 0: none */
+	const char *law;		/* its name (adhesion.h); "none" */
 	double p_adh, a_attr;		/* rc_solver_adhesive_pressure, ..._fraction */
 	double l_adh_dx;		/* l_adh / dx (adhesion.h); 0: none */
 	int separated;			/* rc_solve_result.separated */

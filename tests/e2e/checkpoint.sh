@@ -200,8 +200,13 @@ if [ $copied = 1 ]; then
 	gfmd-solve -q --adhesion 0.2 --range 0.5 --resume scopy.surf sph$n.surf > /dev/null 2>err
 	check "scene: resume with another adhesion: named ($(head -c 150 err))" \
 	    grep -q 'checkpoint has --adhesion 0.25' err
+	check "scene: and the law (checkpoint version 4)" \
+	    grep -a -q '^meta.checkpoint.law = exponential$' scopy.surf
+	gfmd-solve -q --law dugdale --resume scopy.surf sph$n.surf > /dev/null 2>err
+	check "scene: resume with another law: named ($(head -c 150 err))" \
+	    grep -q 'checkpoint has --law exponential, this run dugdale' err
 else
-	skip 5 "scene: every run ended before its checkpoint could be copied"
+	skip 8 "scene: every run ended before its checkpoint could be copied"
 fi
 # The effects take checkpoints now (refused while the scene was not
 # recorded): a plastic sweep with one gives the rows of one without.
