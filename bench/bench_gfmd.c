@@ -28,7 +28,8 @@
  * --adhesion (lib/adhesion.h) with range rho = dx and sigma_max =
  * dgamma / rho = p (l_adh = 20 dx, resolved): the cost of adhesion
  * against the fire row (a_r error against the non-adhesive reference: the
- * effect).  On free boundaries it solves heights on the padded grid
+ * effect); fire-dug the same with Dugdale's law (--law dugdale: sigma_max
+ * up to the opening rho), a comparison per point instead of an exp.  On free boundaries it solves heights on the padded grid
  * (lib/solver_fire_adh_free.c), the fire row pressures: its fft_pairs
  * are padded pairs, as the fire row's.
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
@@ -146,6 +147,8 @@ solve(const rc_grid *g, enum rc_method method, enum rc_boundary boundary,
 		o.poisson = 0.3;
 	}
 	if (adhesive) {
+		o.adhesion_law = adhesive == 2 ? RC_ADHESION_DUGDALE :
+		    RC_ADHESION_EXPONENTIAL;
 		o.range = g->lx / (double)g->nx;
 		o.adhesion = 0.05 * o.range;
 	}
@@ -173,7 +176,8 @@ static const struct bench_row {
 	const char *name;
 	enum rc_method method;
 	double hardness_over_p, thickness;
-	int free_too, plain, adhesive;
+	int free_too, plain;
+	int adhesive;		/* 1: exponential, 2: Dugdale */
 } rows[] = {
 	{ "fire", RC_METHOD_FIRE, 0, 0, 1, 0, 0 },
 	{ "cg", RC_METHOD_CG, 0, 0, 1, 0, 0 },
@@ -181,6 +185,7 @@ static const struct bench_row {
 	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0, 0 },
 	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0, 0 },
 	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 1, 0, 1 },
+	{ "fire-dug", RC_METHOD_FIRE, 0, 0, 1, 0, 2 },
 	{ "fire-plain", RC_METHOD_FIRE, 0, 0, 0, 1, 0 },
 	{ "cg-plain", RC_METHOD_CG, 0, 0, 0, 1, 0 },
 };

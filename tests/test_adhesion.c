@@ -717,9 +717,9 @@ test_transition(void)
 
 /* A sphere R = 50 s under the Dugdale law at Maugis' lambda, range s,
  * on a free 64 s grid (dx = 1): everything but dx scaled by s, unloaded
- * from approach 2 s in steps of 0.02 s. */
+ * from approach 2 s in steps of step s. */
 static struct sweep
-dugdale_sphere(double lambda, double s, double *dgamma)
+dugdale_sphere(double lambda, double s, double step, double *dgamma)
 {
 	double R = 50 * s, rho = s, mu = lambda / cbrt(9 / (2 * M_PI));
 	size_t n = (size_t)(64 * s);
@@ -731,7 +731,7 @@ dugdale_sphere(double lambda, double s, double *dgamma)
 	g->periodic = 0;
 	sv = adhesive_law(g, RC_ADHESION_DUGDALE, *dgamma, rho, 1e-7,
 	    RC_BOUNDARY_FREE);
-	w = unload(sv, n, 2 * s, 0.02 * s);
+	w = unload(sv, n, 2 * s, step * s);
 	w.fmin /= M_PI * *dgamma * R;
 	rc_solver_free(sv);
 	rc_grid_free(g);
@@ -744,7 +744,7 @@ dugdale_sphere(double lambda, double s, double *dgamma)
  * kink as anywhere: at most 40 to 62 iterations per solve at tol 1e-7
  * (the exponential law on the same sphere at lambda 1: 36).  Measured
  * pull-off / (pi dgamma R), coarse and fine, against Maugis':
- *   lambda 0.3  -1.8538 -1.8227  (-1.8156: +2.1%, +0.39%)
+ *   lambda 0.3  -1.8715 -1.8389  (-1.8156: +3.1%, +1.3%)
  *   lambda 0.5  -1.8006 -1.7570  (-1.7183: +4.8%, +2.3%)
  *   lambda 1    -1.7846 -1.6785  (-1.6007: +11.5%, +4.9%)
  *   lambda 2    -1.8683 -1.7100  (-1.5346: +21.7%, +11.4%)
@@ -754,30 +754,38 @@ dugdale_sphere(double lambda, double s, double *dgamma)
  * own compliance times sigma_0 dx^2 ~ rho dx / l_adh (attached it opens
  * less, released more), so the zone lets go late, as if delta_c were
  * larger by about that band.  The error halves with dx, so the
- * extrapolation 2 F(dx/2) - F(dx) removes it: -1.7916, -1.7134, -1.5725,
- * -1.5516, within 1.8% of Maugis' (-1.3%, -0.3%, -1.8%, +1.1%);
- * tolerance 2.5%.  Each grid: pull-off between DMT and Maugis' (the
+ * extrapolation 2 F(dx/2) - F(dx) removes it: -1.8063, -1.7134, -1.5725,
+ * -1.5516, within 1.8% of Maugis' (-0.5%, -0.3%, -1.8%, +1.1%);
+ * tolerance 2.5%.  Approach steps of 0.02 s, but 0.005 s at lambda 0.3,
+ * whose contact at pull-off is a few pixels across: the least force there
+ * hangs on the last pixels' release, and steps of 0.02, 0.005, 0.00125
+ * give -1.8538, -1.8715, -1.8799 (s = 1; at lambda 0.5 and 1 a step 4x
+ * finer moves it by 0.0000 and 0.0044).  Each grid: pull-off between DMT and Maugis' (the
  * bias's sign); the error falls with dx; the extrapolation moves from
  * DMT to JKR as lambda grows.  The zone's extent m = c / a at pull-off
  * (c from the points attracted, a from those in contact), fine grid:
  * 2.475, 1.457, 1.149 against Maugis' 2.408, 1.472, 1.144 at lambda 0.5,
- * 1, 2 (2.8% at most; tolerance 4%); at 0.3 the contact at pull-off is a
- * few pixels across (3.6 and 5.1 against 4.10 on the two grids): not
- * checked. */
+ * 1, 2 (2.8% at most; tolerance 4%); not at 0.3 (the few pixels).
+ * The DMT end, lambda 0.05 (s = 1, steps of 0.002): -1.9643 against
+ * Maugis' -1.9814 (0.9%; tolerance 1.5%) and DMT's -2 (1.8%; 2.5%).
+ * The JKR end of the Dugdale law would need l_adh of tens of dx at
+ * lambda >> 1, i.e. R of thousands of dx: not run. */
 static void
 test_dugdale_transition(void)
 {
-	const double lambda[4] = { 0.3, 0.5, 1, 2 };
-	double prev = -HUGE_VAL;
+	const double lambda[4] = { 0.3, 0.5, 1, 2 }, step[4] = { 0.005, 0.02,
+	    0.02, 0.02 };
+	double prev = -HUGE_VAL, dg;
+	struct sweep w;
 
 	for (int i = 0; i < 4; i++) {
-		double dg, m_theory, f[2], m[2], x;
+		double m_theory, f[2], m[2], x;
 		double fm = maugis_pulloff_m(lambda[i], &m_theory);
 		long it = 0;
 		int st = 0;
 
 		for (int k = 0; k < 2; k++) {
-			struct sweep w = dugdale_sphere(lambda[i], 1 + k, &dg);
+			w = dugdale_sphere(lambda[i], 1 + k, step[i], &dg);
 
 			f[k] = w.fmin;
 			m[k] = w.m_min;
@@ -803,6 +811,14 @@ test_dugdale_transition(void)
 			    "zone's extent m = c/a at pull-off (%.4f on the "
 			    "coarse grid)", lambda[i], m[0]);
 	}
+	/* the DMT end: the action within approaches of 0.1, so steps of
+	 * 0.002 */
+	w = dugdale_sphere(0.05, 1, 0.002, &dg);
+	test_int(w.status, 0, "Dugdale lambda 0.05: every solve converges");
+	test_rel(w.fmin, -2, 0.025, "Dugdale lambda 0.05: pull-off near DMT's "
+	    "-2");
+	test_rel(w.fmin, maugis_pulloff(0.05), 0.015, "Dugdale lambda 0.05: "
+	    "pull-off against Maugis'");
 }
 
 /* Warm start: solving the same approach again takes no iterations (the
