@@ -20,7 +20,8 @@
 #include "solver.h"
 
 /* 2: the identity hash covers metadata, units and the missing-point mask;
- * 3: the scene (boundary, kernel, effects).  Version 2 is still read. */
+ * 3: the scene (boundary, kernel, effects); 4: the adhesive law.
+ * Versions 2 and 3 are still read. */
 #define VERSION 4
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL

@@ -49,8 +49,8 @@
  * (tests/test_adhesion.c).
  *
  * Cost per iteration: that of solver_fire.c plus one exp per point within
- * RC_ADH_CUTOFF ranges of the wall (Dugdale: a comparison) (displacement control: one more O(N)
- * pass for the mean).  Memory: none beyond FIRE's.
+ * RC_ADH_CUTOFF ranges of the wall (Dugdale: a comparison instead;
+ * displacement control: one more O(N) pass for the mean).  Memory: none beyond FIRE's.
  *
  * The loop runs on a view (rc__adh_view, solver_impl.h) of the grid: the
  * solver's own fields here, the padded grid of solver_fire_adh_free.c on

@@ -642,17 +642,25 @@ test_free_sphere(double dmt_periodic)
  * positive root).  The least load on a grid of 1e-4 in log(m - 1), from
  * m - 1 = 6e-6 to 400: -1.9983 at lambda 0.01, -1.5004 at 20 (the limits
  * -2 and -1.5). */
+/* The point m of Maugis' curve: the load, A into *A. */
+static double
+maugis_load(double lambda, double m, double *A)
+{
+	double sq = sqrt(m * m - 1), t = atan(sq);
+	double c2 = 0.5 * lambda * (sq + (m * m - 2) * t);
+	double c1 = 4 * lambda * lambda / 3 * (sq * t - m + 1);
+
+	*A = (-c1 + sqrt(c1 * c1 + 4 * c2)) / (2 * c2);
+	return *A * *A * *A - lambda * *A * *A * (sq + m * m * t);
+}
+
 static double
 maugis_pulloff_m(double lambda, double *m_at)
 {
 	double least = HUGE_VAL;
 
 	for (double lm = -12; lm < 6; lm += 1e-4) {
-		double m = 1 + exp(lm), sq = sqrt(m * m - 1), t = atan(sq);
-		double c2 = 0.5 * lambda * (sq + (m * m - 2) * t);
-		double c1 = 4 * lambda * lambda / 3 * (sq * t - m + 1);
-		double A = (-c1 + sqrt(c1 * c1 + 4 * c2)) / (2 * c2);
-		double f = A * A * A - lambda * A * A * (sq + m * m * t);
+		double A, m = 1 + exp(lm), f = maugis_load(lambda, m, &A);
 
 		if (A > 0 && f < least) {
 			least = f;
@@ -667,6 +675,25 @@ static double
 maugis_pulloff(double lambda)
 {
 	return maugis_pulloff_m(lambda, NULL);
+}
+
+/* Maugis' contact radius at zero load, A = a (K / (pi dgamma
+ * R^2))^(1/3), on the same grid in m (the largest A where F changes
+ * sign: the stable branch). */
+static double
+maugis_zero_load_A(double lambda)
+{
+	double best = NAN, a_prev = NAN, f_prev = NAN;
+
+	for (double lm = -12; lm < 6; lm += 1e-4) {
+		double A, f = maugis_load(lambda, 1 + exp(lm), &A);
+
+		if (f_prev * f <= 0 && !(A < best))
+			best = a_prev + (A - a_prev) * f_prev / (f_prev - f);
+		a_prev = A;
+		f_prev = f;
+	}
+	return best;
 }
 
 /* The transition between the limits on free boundaries, against Maugis'
@@ -766,6 +793,10 @@ dugdale_sphere(double lambda, double s, double step, double *dgamma)
  * (c from the points attracted, a from those in contact), fine grid:
  * 2.475, 1.457, 1.149 against Maugis' 2.408, 1.472, 1.144 at lambda 0.5,
  * 1, 2 (2.8% at most; tolerance 4%); not at 0.3 (the few pixels).
+ * The contact radius at zero load at lambda 1 (Maugis': A = 1.636,
+ * a0 = A (pi dgamma R^2 / K)^(1/3)): 14.64 and 29.37 dx against 14.50
+ * and 29.00 (+0.9%, +1.3%; one pixel is 6.9% and 3.4% of it);
+ * tolerance 3%.
  * The DMT end, lambda 0.05 (s = 1, steps of 0.002): -1.9643 against
  * Maugis' -1.9814 (0.9%; tolerance 1.5%) and DMT's -2 (1.8%; 2.5%).
  * The JKR end of the Dugdale law would need l_adh of tens of dx at
@@ -779,7 +810,7 @@ test_dugdale_transition(void)
 	struct sweep w;
 
 	for (int i = 0; i < 4; i++) {
-		double m_theory, f[2], m[2], x;
+		double m_theory = NAN, f[2], m[2], x;
 		double fm = maugis_pulloff_m(lambda[i], &m_theory);
 		long it = 0;
 		int st = 0;
@@ -789,6 +820,11 @@ test_dugdale_transition(void)
 
 			f[k] = w.fmin;
 			m[k] = w.m_min;
+			if (lambda[i] == 1)
+				test_rel(w.a0, maugis_zero_load_A(1) / cbrt(4.0 / 3 /
+				    (M_PI * dg * 2500 * (1 + k) * (1 + k))), 0.03,
+				    "Dugdale lambda 1, s = %d: contact radius at zero "
+				    "load", 1 + k);
 			st |= w.status;
 			it = w.it_max > it ? w.it_max : it;
 			test_range(f[k], -2, fm, "Dugdale lambda %g, l_adh %.3g dx: "
