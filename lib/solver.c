@@ -33,6 +33,11 @@
  * elastic_free.h replaces K and G; without K the measure is the gap
  * bound of solver_cg.c for both methods (FIRE then runs on the pressures,
  * solver_fire_free.c).
+ *
+ * A hardness (perfect plasticity): the CG of solver_cg_plastic.c, or FIRE
+ * on the pressures (solver_fire_free.c) on either boundary kind, both
+ * with the plastic CG's measure; the elastic periodic FIRE
+ * (solver_fire.c) is not involved.
  */
 #include "solver_impl.h"
 

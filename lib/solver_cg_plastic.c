@@ -26,6 +26,10 @@
  * uniform scaling (the clipping at H is not linear): about two FFT pairs
  * per iteration where solver_cg.c needs one near convergence.
  *
+ * The level, the load restoration, the start and the convergence check
+ * are shared with FIRE on pressures (solver_fire_free.c), which solves the
+ * same problem; p > H is refused by solver.c for both.
+ *
  * Convergence: solver_cg.c's measure with u' = h on F, max(v, h) at zero
  * pressure and min(v, h) at H (v = G sigma + c): the residual
  * rms(p + K u' - sigma)/p (periodic) or the gap bound (free).

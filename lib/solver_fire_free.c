@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_fire_free.c - FIRE on free boundaries: damped dynamics of the contact
- * pressures sigma >= 0 (not of the surface heights, as solver_fire.c does on a
- * periodic body), with the padded compliance G (elastic_free.h) as the
- * operator and the periodic stiffness of the same grid as the inverse
- * mass, so that every mode has nearly the same frequency.
+/* solver_fire_free.c - FIRE on pressures: on free boundaries, and with a
+ * hardness (perfect plasticity) on either boundary kind.  Damped dynamics
+ * of the contact pressures sigma >= 0 (not of the surface heights, as
+ * solver_fire.c does on a periodic body, which stays the elastic periodic
+ * FIRE), with the compliance G as the operator (free: the padded one of
+ * elastic_free.h; periodic: 1/k_q of elastic.h, a layer's too) and the
+ * periodic stiffness of the same grid as the inverse mass, so that every
+ * mode has nearly the same frequency.
  *
  * The pressures minimise the complementary energy
  *   Pi(sigma) = (1/2) sigma.G sigma - sigma.(h - c),  sigma >= 0,
@@ -33,13 +36,34 @@
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).
+ * Perfect plasticity (opts.hardness H; the model of solver_cg_plastic.c):
+ * the same minimisation over the box 0 <= sigma <= H.  Step 1's level is
+ * fitted over 0 < sigma < H (rc__plastic_level); step 2's active set
+ * adds the points at H whose gap is open (g > 0: the force lowers them)
+ * and leaves out those at H with g <= 0 (the bound takes the force);
+ * step 5 clamps into [0, H] (v = 0 where clamped; no point moves by more
+ * than H/2 in a step, see TRUST) and restores the load as the plastic CG
+ * does (rc__plastic_restore_load: the pressures below H scaled, and its
+ * fallback when they carry nothing).  The stopping rule and measure are
+ * the plastic CG's (rc__plastic_check through rc__cg_next: periodic, the
+ * residual rms(p + K u' - sigma) / p; free, the gap bound), so both
+ * methods stop at comparable accuracy.  Without a hardness the rules
+ * are those of sigma >= 0 alone (H = +inf), the free rows unchanged.
+ * Measured (gfmd-solve --hardness 0.2 --pressure-abs 0.05, tol 1e-6,
+ * surfgen defaults, seed 1; a_r 0.26, a_plastic 0.24): FIRE 33, 48, 44
+ * iterations periodic and 34, 40, 42 free at 128^2, 256^2, 512^2; the
+ * plastic CG 22, 30, 42 and 24, 30, 43 (the same contact and plastic
+ * sets to the point).  Periodic cost: two pairs of the nx x ny transform
+ * per iteration (G sigma and K f), counted by solver.c; one more every
+ * 100 iterations when rc__cg_next checks the residual itself.
+ *
  * Measured (gfmd-solve --boundary free -p 0.05, surfgen defaults, seed 1,
  * tol 1e-6): FIRE 43, 59, 72 iterations at 128^2, 256^2, 512^2; the CG
  * 48, 97, 187 on the same maps (same a_r to the last point).
  * Cost per iteration: one padded pair and one unpadded pair (about 1.25
  * padded pairs); fft_pairs counts the padded pairs plus a quarter of the
- * unpadded ones.  Memory: sigma, u, v and the periodic operator besides
- * the padded one.
+ * unpadded ones.  Memory: sigma, u, v, f and the periodic operator
+ * besides the padded one (periodic with a hardness: sigma, u, v, f).
  */
 #include "solver_impl.h"
 

@@ -30,7 +30,8 @@ struct rc_solver {
 	int free_bc;		/* opts.boundary == RC_BOUNDARY_FREE */
 	double level;		/* free CG: rigid level c of the solution */
 	double top;		/* max h */
-	double *scratch;	/* free CG: n doubles for G t */
+	double *scratch;	/* n doubles: G t of the free CG, the force
+				 * of FIRE on pressures */
 	double *height;		/* indenter h, n */
 	double *u;		/* elastic surface height; FIRE: el.fft.real */
 	double *sigma;		/* contact pressure, n */
@@ -114,12 +115,14 @@ double rc__stiffness_max(const rc_solver *s);
 int rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
-/* Shared by solver_cg.c and solver_cg_plastic.c: out = G x; G_00 of the
+/* Shared by solver_cg.c, solver_cg_plastic.c (and, out = G x and the
+ * start, FIRE on pressures): out = G x; G_00 of the
  * periodic compliance; the CG start pressure of mean p (unbounded). */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
-/* The stopping rule of both CG variants (solver_cg.c), after iteration it
+/* The stopping rule of both CG variants (solver_cg.c; FIRE with a
+ * hardness on periodic boundaries too), after iteration it
  * has its gap bound: STOP (the final check ran: *residual, and *status 0
  * if it met opts.tol), STALE (a periodic check of the residual itself
  * ran and missed: the iterate must be recomputed) or GO. */
