@@ -16,10 +16,12 @@
  * agree at that tolerance: tests/test_solver.c); cpu_iter_in_pairs, the
  * same ratio in process CPU time (the solve's over the pair's), which
  * other processes on the machine disturb far less than the wall time.
- * A third method row, cg-plastic, is CG with the pressure capped at the
- * hardness H = 4 p (gfmd-solve --hardness; lib/solver_cg_plastic.c): the cost
- * of plasticity against the elastic cg row of the same map (its a_r
- * error is against the elastic reference, so it shows the effect).
+ * Two more method rows, cg-plastic and fire-plastic, solve with the
+ * pressure capped at the hardness H = 4 p (gfmd-solve --hardness;
+ * lib/solver_cg_plastic.c, and FIRE on pressures, lib/solver_fire_free.c,
+ * on both boundary kinds): the cost of plasticity against the elastic
+ * rows of the same map (their a_r error is against the elastic
+ * reference, so it shows the effect).
  * Two more, fire-layer and cg-layer (periodic only), solve the same map
  * on a bonded elastic layer of thickness L/8, nu = 0.3 (gfmd-solve
  * --thickness; lib/layer.h): the cost of a finite thickness against the
@@ -182,6 +184,7 @@ static const struct bench_row {
 	{ "fire", RC_METHOD_FIRE, 0, 0, 1, 0, 0 },
 	{ "cg", RC_METHOD_CG, 0, 0, 1, 0, 0 },
 	{ "cg-plastic", RC_METHOD_CG, 4, 0, 1, 0, 0 },
+	{ "fire-plastic", RC_METHOD_FIRE, 4, 0, 1, 0, 0 },
 	{ "fire-layer", RC_METHOD_FIRE, 0, 1.0 / 8, 0, 0, 0 },
 	{ "cg-layer", RC_METHOD_CG, 0, 1.0 / 8, 0, 0, 0 },
 	{ "fire-adh", RC_METHOD_FIRE, 0, 0, 1, 0, 1 },

@@ -33,6 +33,11 @@
  * elastic_free.h replaces K and G; without K the measure is the gap
  * bound of solver_cg.c for both methods (FIRE then runs on the pressures,
  * solver_fire_free.c).
+ *
+ * A hardness (perfect plasticity): the CG of solver_cg_plastic.c, or FIRE
+ * on the pressures (solver_fire_free.c) on either boundary kind, both
+ * with the plastic CG's measure; the elastic periodic FIRE
+ * (solver_fire.c) is not involved.
  */
 #include "solver_impl.h"
 
@@ -92,6 +97,18 @@ rc_method_parse(const char *name)
 	return -1;
 }
 
+/* Whether the scratch field is needed: G t of the free CG, the force of
+ * FIRE on pressures (free, or a hardness; the adhesive free FIRE has
+ * padded fields of its own). */
+static int
+scratch_needed(const rc_solver *s)
+{
+	const rc_solver_opts *o = &s->opts;
+
+	return !rc_solver_opts_adhesive(o) && (s->free_bc ||
+	    (o->method == RC_METHOD_FIRE && rc_solver_opts_plastic(o)));
+}
+
 /* Long: every option is checked here, together, before anything is
  * allocated. */
 rc_solver *
@@ -116,11 +133,6 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "hardness must be positive (0 or inf: no cap)");
 		return NULL;
 	}
-	if (rc_solver_opts_plastic(o) && o->method != RC_METHOD_CG) {
-		rc_seterr(err, "a hardness needs the CG method (--method cg): "
-		    "FIRE has no bounded-pressure variant");
-		return NULL;
-	}
 	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) < 0)
 		return NULL;
 	if (!(o->adhesion >= 0 && isfinite(o->adhesion)) ||
@@ -133,11 +145,14 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "unknown adhesive law %d", (int)o->adhesion_law);
 		return NULL;
 	}
-	if (rc_solver_opts_adhesive(o) && (o->method != RC_METHOD_FIRE ||
-	    rc_solver_opts_plastic(o))) {
-		rc_seterr(err, "adhesion needs the FIRE method (--method fire) "
-		    "without a hardness: the CG solves a convex problem and "
-		    "adhesion is not one");
+	if (rc_solver_opts_adhesive(o) && o->method != RC_METHOD_FIRE) {
+		rc_seterr(err, "adhesion needs the FIRE method (--method fire): "
+		    "the CG solves a convex problem and adhesion is not one");
+		return NULL;
+	}
+	if (rc_solver_opts_adhesive(o) && rc_solver_opts_plastic(o)) {
+		rc_seterr(err, "adhesion with a hardness: not combined (the "
+		    "adhesive FIRE loop has no bounded-pressure variant)");
 		return NULL;
 	}
 	if (o->kernel != RC_KERNEL_CONTINUUM && o->kernel != RC_KERNEL_PIXEL) {
@@ -224,13 +239,10 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	for (size_t k = 0; k < n; k++)
 		if (s->height[k] > s->top)
 			s->top = s->height[k];
-	/* scratch: G t of the free CG and the free FIRE on pressures (the
-	 * adhesive free FIRE has padded fields of its own) */
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
-	    rc__cg_alloc(s, err)) != 0 || (s->free_bc && s->scratch == NULL &&
-	    !rc_solver_opts_adhesive(o) &&
-	    (s->scratch = fftw_alloc_real(n)) == NULL)) {
-		if (s->free_bc && s->scratch == NULL)
+	    rc__cg_alloc(s, err)) != 0 || (scratch_needed(s) &&
+	    s->scratch == NULL && (s->scratch = fftw_alloc_real(n)) == NULL)) {
+		if (scratch_needed(s) && s->scratch == NULL)
 			rc_seterr(err, "out of memory (asked for %zu bytes)",
 			    n * sizeof(double));
 		rc_solver_free(s);
@@ -293,8 +305,13 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		r = rc__fire_adh_solve(s, 0, &p, 0, res, err);
 	} else if (!(p > 0) || !isfinite(p))
 		return rc_seterr(err, "pressure must be positive and finite");
-	else if (s->opts.method == RC_METHOD_FIRE && s->free_bc)
-		r = rc__fire_free_solve(s, p, res, err);
+	else if (rc_solver_opts_plastic(&s->opts) && p > s->opts.hardness)
+		return rc_seterr(err, "pressure %g exceeds the hardness %g: no "
+		    "pressure field bounded by the hardness carries it", p,
+		    s->opts.hardness);
+	else if (s->opts.method == RC_METHOD_FIRE && (s->free_bc ||
+	    rc_solver_opts_plastic(&s->opts)))
+		r = rc__fire_sigma_solve(s, p, res, err);
 	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
 	else if (rc_solver_opts_plastic(&s->opts))

@@ -38,7 +38,7 @@ enum rc_boundary {
 typedef struct rc_solver_opts {
 	enum rc_method method;
 	/* Free boundaries: grids of at least 2 x 2; FIRE runs on pressures
-	 * there (solver_fire_free.c). */
+	 * there, and with a hardness (solver_fire_free.c). */
 	enum rc_boundary boundary;
 	double modulus;		/* contact modulus E* (default 1) */
 	/* The periodic elastic kernel (elastic.h): the continuum q E* / 2
@@ -48,7 +48,9 @@ typedef struct rc_solver_opts {
 	 * RC_KERNEL_PIXEL, and ignore it.  The pixel kernel has no layer. */
 	enum rc_kernel kernel;
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
-	 * 0 or +inf: no cap (the default).  CG only (solver_cg_plastic.c,
+	 * 0 or +inf: no cap (the default).  Both methods, both boundary
+	 * kinds, a layer, displacement control; not with adhesion
+	 * (solver_cg_plastic.c; FIRE on pressures, solver_fire_free.c;
 	 * gfmd-solve(1) PLASTICITY). */
 	double hardness;
 	/* An elastic layer of this thickness (lateral length units) on a
@@ -130,7 +132,11 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * solve (solver_approach.c); |approach - delta| <= opts.tol * delta at
  * the end.  *pressure gets p; res sums the iterations, transform pairs
  * and time of all trials.  Periodic: delta must be below max h - <h>
- * (full contact).  Returns as rc_solver_solve. */
+ * (full contact), unless a hardness flattens the indenter.  A hardness
+ * H: p stays below H, and delta must be below the approach reached as
+ * p -> H (about max h - min h plus the elastic deflection; beyond it the
+ * whole area flows: an error, solver_approach.c).  Returns as
+ * rc_solver_solve. */
 /* With adhesion: any finite delta, solved directly by FIRE with the mean
  * height (free boundaries: the rigid level) held (solver_fire_adh.c,
  * solver_fire_adh_free.c), which traces unstable branches too. */

@@ -26,6 +26,10 @@
  * uniform scaling (the clipping at H is not linear): about two FFT pairs
  * per iteration where solver_cg.c needs one near convergence.
  *
+ * The level, the load restoration, the start and the convergence check
+ * are shared with FIRE on pressures (solver_fire_free.c), which solves the
+ * same problem; p > H is refused by solver.c for both.
+ *
  * Convergence: solver_cg.c's measure with u' = h on F, max(v, h) at zero
  * pressure and min(v, h) at H (v = G sigma + c): the residual
  * rms(p + K u' - sigma)/p (periodic) or the gap bound (free).
@@ -53,8 +57,8 @@ admissible(double v, double h, double sigma, double H)
  * the interval the bounds allow, c >= h - G sigma at zero pressure and
  * c <= h - G sigma at H (its end when one side is empty).  Returns the
  * number of points with sigma > 0. */
-static size_t
-plastic_level(const rc_solver *s, double *c)
+size_t
+rc__plastic_level(const rc_solver *s, double *c)
 {
 	size_t k, on = 0, nf = 0, nz = 0;
 	double sum_f = 0, H = s->opts.hardness, lo = -HUGE_VAL, hi = HUGE_VAL;
@@ -93,8 +97,8 @@ plastic_level(const rc_solver *s, double *c)
  * was a uniform scale (applied to disp too). */
 /* Long: the bisection on the level and the clamp at 0 and H share the
  * pressure bounds. */
-static int
-restore_load(rc_solver *s, double p, double *disp)
+int
+rc__plastic_restore_load(rc_solver *s, double p, double *disp)
 {
 	size_t k, n = s->n;
 	double *sigma = s->sigma, H = s->opts.hardness, pn = p * (double)n;
@@ -153,7 +157,7 @@ restore_load(rc_solver *s, double p, double *disp)
 		size_t n_a = 0;
 		int all, i;
 
-		plastic_level(s, &c);
+		rc__plastic_level(s, &c);
 		for (k = 0; k < n; k++)
 			n_a += sigma[k] > 0 || (disp && disp[k] + c < s->height[k]);
 		all = (double)n_a * H < pn;
@@ -183,17 +187,30 @@ restore_load(rc_solver *s, double p, double *disp)
 	return 1;
 }
 
+/* The CG's start (solver_cg.c) clipped at H, the load restored. */
+void
+rc__plastic_initial_pressure(rc_solver *s, double p)
+{
+	size_t k;
+
+	rc__cg_initial_pressure(s, p);
+	for (k = 0; k < s->n; k++)
+		if (s->sigma[k] > s->opts.hardness)
+			s->sigma[k] = s->opts.hardness;
+	rc__plastic_restore_load(s, p, NULL);
+}
+
 /* Residual of (u', sigma); leaves u' in s->u, the contact set, level and
  * energy.  s->u holds G sigma on entry. */
-static double
-plastic_check(rc_solver *s, double p)
+double
+rc__plastic_check(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
 	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, H = s->opts.hardness;
 	double *u = s->u;
 	const double *h = s->height, *sigma = s->sigma;
 
-	plastic_level(s, &c);
+	rc__plastic_level(s, &c);
 	s->level = c;
 	if (s->free_bc) {
 		for (k = 0; k < n; k++) {
@@ -226,14 +243,6 @@ plastic_check(rc_solver *s, double p)
 	}
 }
 
-/* Whether point k takes part in the step: free, or violating its bound. */
-static int
-active(double sigma, double g, double H)
-{
-	return (sigma > 0 && sigma < H) || (sigma <= 0 && g < 0) ||
-	    (sigma >= H && g > 0);
-}
-
 /* Long: one bounded-pressure CG iteration: its passes share the sums and
  * the conjugate direction. */
 int
@@ -251,14 +260,8 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 	long it;
 	int stale = 1, conjugate = 0, status = 1, next;
 
-	if (p > H)
-		return rc_seterr(err, "pressure %g exceeds the hardness %g: no "
-		    "pressure field bounded by the hardness carries it", p, H);
-	rc__cg_initial_pressure(s, p);
-	for (k = 0; k < n; k++)
-		if (sigma[k] > H)
-			sigma[k] = H;
-	restore_load(s, p, NULL);
+	(void)err;
+	rc__plastic_initial_pressure(s, p);
 	memset(t, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double viol = 0, gsum = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
@@ -269,17 +272,17 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 			rc__compliance(s, sigma, disp);
 			stale = 0;
 		}
-		n_contact = plastic_level(s, &c);
+		n_contact = rc__plastic_level(s, &c);
 		for (k = 0; k < n; k++) {
 			double g = disp[k] + c - h[k];
 
-			if (active(sigma[k], g, H)) {
+			if (rc__plastic_active(sigma[k], g, H)) {
 				viol += g * g;
 				gsum += g * g;
 			}
 		}
 		bound = k_max * sqrt(viol * inv_n) / p;
-		next = rc__cg_next(s, p, bound, it, plastic_check, &residual,
+		next = rc__cg_next(s, p, bound, it, rc__plastic_check, &residual,
 		    &status);
 		if (next == RC__CG_STOP)
 			break;
@@ -295,7 +298,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 		for (k = 0; k < n; k++) {
 			double g = disp[k] + c - h[k];
 
-			if (active(sigma[k], g, H)) {
+			if (rc__plastic_active(sigma[k], g, H)) {
 				t[k] = g + beta * t[k];
 				n_active++;
 				sum_gt += g * t[k];
@@ -307,7 +310,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 		}
 		rc__compliance(s, t, r);
 		for (k = 0; k < n; k++)
-			if (t[k] != 0 || active(sigma[k], disp[k] + c - h[k], H)) {
+			if (t[k] != 0 || rc__plastic_active(sigma[k], disp[k] + c - h[k], H)) {
 				sum_rt += r[k] * t[k];
 				sum_r += r[k];
 			}
@@ -331,7 +334,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 			double g = disp[k] + c - h[k], old = sigma[k], v;
 
 			disp[k] -= tau * r[k];	/* G sigma, if the step stays linear */
-			if (!active(old, g, H))
+			if (!rc__plastic_active(old, g, H))
 				continue;
 			v = tau > 0 ? old - tau * t[k] : old - tau_in * g;
 			if (v < 0)
@@ -345,7 +348,7 @@ rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
 		conjugate = changed == 0 && tau > 0;
 		if (changed || !(tau > 0))
 			stale = 1;
-		if (restore_load(s, p, stale ? NULL : disp))
+		if (rc__plastic_restore_load(s, p, stale ? NULL : disp))
 			stale = 1;
 	}
 	res->iterations = it;

@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_fire_free.c - FIRE on free boundaries: damped dynamics of the contact
- * pressures sigma >= 0 (not of the surface heights, as solver_fire.c does on a
- * periodic body), with the padded compliance G (elastic_free.h) as the
- * operator and the periodic stiffness of the same grid as the inverse
- * mass, so that every mode has nearly the same frequency.
+/* solver_fire_free.c - FIRE on pressures: on free boundaries, and with a
+ * hardness (perfect plasticity) on either boundary kind.  Damped dynamics
+ * of the contact pressures sigma >= 0 (not of the surface heights, as
+ * solver_fire.c does on a periodic body, which stays the elastic periodic
+ * FIRE), with the compliance G as the operator (free: the padded one of
+ * elastic_free.h; periodic: 1/k_q of elastic.h, a layer's too) and the
+ * periodic stiffness of the same grid as the inverse mass, so that every
+ * mode has nearly the same frequency.
  *
  * The pressures minimise the complementary energy
  *   Pi(sigma) = (1/2) sigma.G sigma - sigma.(h - c),  sigma >= 0,
@@ -33,18 +36,48 @@
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).
+ * Perfect plasticity (opts.hardness H; the model of solver_cg_plastic.c):
+ * the same minimisation over the box 0 <= sigma <= H.  Step 1's level is
+ * fitted over 0 < sigma < H (rc__plastic_level); step 2's active set
+ * adds the points at H whose gap is open (g > 0: the force lowers them)
+ * and leaves out those at H with g <= 0 (the bound takes the force);
+ * step 5 clamps into [0, H] (v = 0 where clamped; no point moves by more
+ * than H/2 in a step, see TRUST) and restores the load as the plastic CG
+ * does (rc__plastic_restore_load: the pressures below H scaled, and its
+ * fallback when they carry nothing).  The stopping rule and measure are
+ * the plastic CG's (rc__plastic_check through rc__cg_next: periodic, the
+ * residual rms(p + K u' - sigma) / p; free, the gap bound), so both
+ * methods stop at comparable accuracy.  Without a hardness the rules
+ * are those of sigma >= 0 alone (H = +inf), the free rows unchanged.
+ * Measured (gfmd-solve --hardness 0.2 --pressure-abs 0.05, tol 1e-6,
+ * surfgen defaults, seed 1; a_r 0.26, a_plastic 0.24): FIRE 33, 48, 44
+ * iterations periodic and 34, 40, 42 free at 128^2, 256^2, 512^2; the
+ * plastic CG 22, 30, 42 and 24, 30, 43 (the same contact and plastic
+ * sets to the point).  Periodic cost: two pairs of the nx x ny transform
+ * per iteration (G sigma and K f), counted by solver.c; one more every
+ * 100 iterations when rc__cg_next checks the residual itself.
+ *
  * Measured (gfmd-solve --boundary free -p 0.05, surfgen defaults, seed 1,
  * tol 1e-6): FIRE 43, 59, 72 iterations at 128^2, 256^2, 512^2; the CG
  * 48, 97, 187 on the same maps (same a_r to the last point).
  * Cost per iteration: one padded pair and one unpadded pair (about 1.25
  * padded pairs); fft_pairs counts the padded pairs plus a quarter of the
- * unpadded ones.  Memory: sigma, u, v and the periodic operator besides
- * the padded one.
+ * unpadded ones.  Memory: sigma, u, v, f and the periodic operator
+ * besides the padded one (periodic with a hardness: sigma, u, v, f).
  */
 #include "solver_impl.h"
 
 #include <math.h>
 #include <string.h>
+
+/* With a hardness, no pressure moves by more than TRUST H in one step (a
+ * cap on each point's step, as the plastic CG's trust region): without
+ * it, near p = H (128^2 self-affine, H = 0.2, p = 0.988 H) steps sent
+ * every free point to a bound, the load restoration then spread the load
+ * over all points and the iteration cycled (3000 iterations, residual
+ * 0.6); with it 35.  TRUST 0.25 converged too, in 10-30 % more
+ * iterations.  Without a hardness the cap is infinite: no effect. */
+#define TRUST	0.5
 
 /* a = K f (mean mode 0) into the periodic operator's real buffer. */
 static double *
@@ -56,22 +89,29 @@ stiffness_times(rc_solver *s, const double *f)
 	return e->fft.real;
 }
 
-static void
-initial_pressure(rc_solver *s, double p)
+/* The stopping rule (solver_cg.c's, from the bound of step 2): periodic,
+ * rc__cg_next with its periodic checks of the residual itself; free, the
+ * check is the bound itself, so it runs only at the end. */
+static int
+stop_rule(rc_solver *s, double p, double bound, long it,
+    double (*check)(rc_solver *, double), double *residual, int *status)
 {
-	size_t k, n = s->n;
-	double *sigma = s->sigma;
-
-	if (!s->have_sigma && s->have_u)
-		for (k = 0; k < n; k++)
-			sigma[k] = s->u[k] <= s->height[k] ? p : 0;
-	rc__sigma_to_load(s, p);
+	if (!s->free_bc)
+		return rc__cg_next(s, p, bound, it, check, residual, status);
+	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
+	    (s->opts.stop && *s->opts.stop)) {
+		*residual = check(s, p);
+		if (*residual <= s->opts.tol)
+			*status = 0;
+		return RC__CG_STOP;
+	}
+	return RC__CG_GO;
 }
 
 /* Long: the FIRE iteration on pressures, its passes sharing their sums
  * as in solver_fire.c. */
 int
-rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
+rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
 	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
@@ -80,11 +120,20 @@ rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	double k_max = rc__stiffness_max(s), pn = p * (double)n;
 	const double *h = s->height;
 	unsigned long small0 = s->el.n_r2c + s->el.n_c2r;
+	int plastic = rc_solver_opts_plastic(&s->opts);
+	/* no cap: the rules below reduce to those of sigma >= 0 alone */
+	double H = plastic ? s->opts.hardness : HUGE_VAL;
+	double max_move = TRUST * H;
+	double (*check)(rc_solver *, double) = plastic ? rc__plastic_check :
+	    rc__final_check_free;
 	long it, npos = 0;
-	int status = 1;
+	int status = 1, next;
 
 	(void)err;
-	initial_pressure(s, p);
+	if (plastic)
+		rc__plastic_initial_pressure(s, p);
+	else
+		rc__cg_initial_pressure(s, p);
 	memset(v, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double c, ff = 0, power = 0, aa = 0, av = 0, vv = 0, sum = 0;
@@ -92,27 +141,25 @@ rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		size_t on;
 		int restart;
 
-		rc_halfspace_apply(&s->fel, sigma, u);
-		on = rc__level(s, &c);
+		rc__compliance(s, sigma, u);
+		on = plastic ? rc__plastic_level(s, &c) : rc__level(s, &c);
 #pragma omp parallel for reduction(+:ff, power) schedule(static)
 		for (k = 0; k < n; k++) {
 			double g = u[k] + c - h[k];
 
-			f[k] = sigma[k] > 0 || g < 0 ? -g : 0;
+			f[k] = rc__plastic_active(sigma[k], g, H) ? -g : 0;
 			ff += f[k] * f[k];
 			power += f[k] * v[k];
 		}
-		residual = k_max * sqrt(ff / (double)n) / p;
-		if (residual <= s->opts.tol || it >= s->opts.max_iter ||
-		    (s->opts.stop && *s->opts.stop)) {
-			residual = rc__final_check_free(s, p);
-			if (residual <= s->opts.tol)
-				status = 0;
+		next = stop_rule(s, p, k_max * sqrt(ff / (double)n) / p, it,
+		    check, &residual, &status);
+		if (next == RC__CG_STOP)
 			break;
-		}
+		if (next == RC__CG_STALE)
+			continue;	/* the check left u' in u: recompute */
 		if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
-			s->opts.progress(s->opts.progress_ctx, it, residual,
-			    (double)on / (double)n);
+			s->opts.progress(s->opts.progress_ctx, it,
+			    k_max * sqrt(ff / (double)n) / p, (double)on / (double)n);
 		a = stiffness_times(s, f);
 		restart = !(power > 0);
 		if (!restart) {
@@ -144,24 +191,36 @@ rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 #pragma omp parallel for reduction(+:sum) schedule(static)
 		for (k = 0; k < n; k++) {
 			double vk = mix_v * (v[k] + dt * a[k]) + mix_a * a[k];
-			double sk = sigma[k] + dt * vk;
+			double sk;
+
+			if (fabs(dt * vk) > max_move)
+				vk = copysign(max_move / dt, vk);
+			sk = sigma[k] + dt * vk;
 
 			if (sk <= 0) {
 				sk = 0;
+				vk = 0;
+			} else if (sk >= H) {
+				sk = H;
 				vk = 0;
 			}
 			sigma[k] = sk;
 			v[k] = vk;
 			sum += sk;
 		}
-		if (sum > 0)
+		if (plastic)
+			rc__plastic_restore_load(s, p, NULL);
+		else if (sum > 0)
 #pragma omp parallel for schedule(static)
 			for (k = 0; k < n; k++)
 				sigma[k] *= pn / sum;
 	}
-	/* fft_pairs in padded pairs (solver.c counts those): the unpadded
-	 * pairs as a quarter each. */
-	res->fft_pairs = 0.25 * 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - small0);
+	/* Free: fft_pairs in padded pairs (solver.c counts those), the
+	 * unpadded pairs as a quarter each.  Periodic: both operators are
+	 * s->el's, which solver.c counts. */
+	if (s->free_bc)
+		res->fft_pairs = 0.25 * 0.5 *
+		    (double)(s->el.n_r2c + s->el.n_c2r - small0);
 	res->iterations = it;
 	res->residual = residual;
 	return status;

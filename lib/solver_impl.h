@@ -30,7 +30,8 @@ struct rc_solver {
 	int free_bc;		/* opts.boundary == RC_BOUNDARY_FREE */
 	double level;		/* free CG: rigid level c of the solution */
 	double top;		/* max h */
-	double *scratch;	/* free CG: n doubles for G t */
+	double *scratch;	/* n doubles: G t of the free CG, the force
+				 * of FIRE on pressures */
 	double *height;		/* indenter h, n */
 	double *u;		/* elastic surface height; FIRE: el.fft.real */
 	double *sigma;		/* contact pressure, n */
@@ -109,15 +110,19 @@ double rc__final_check_free(rc_solver *s, double p);
 double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
     double sum_e);
 double rc__stiffness_max(const rc_solver *s);
-int rc__fire_free_solve(rc_solver *s, double p, rc_solve_result *res,
+/* FIRE on pressures (solver_fire_free.c): free boundaries, and a
+ * hardness on either boundary kind. */
+int rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
-/* Shared by solver_cg.c and solver_cg_plastic.c: out = G x; G_00 of the
+/* Shared by solver_cg.c, solver_cg_plastic.c (and, out = G x and the
+ * start, FIRE on pressures): out = G x; G_00 of the
  * periodic compliance; the CG start pressure of mean p (unbounded). */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
-/* The stopping rule of both CG variants (solver_cg.c), after iteration it
+/* The stopping rule of both CG variants (solver_cg.c; FIRE with a
+ * hardness on periodic boundaries too), after iteration it
  * has its gap bound: STOP (the final check ran: *residual, and *status 0
  * if it met opts.tol), STALE (a periodic check of the residual itself
  * ran and missed: the iterate must be recomputed) or GO. */
@@ -127,6 +132,28 @@ int rc__cg_next(rc_solver *s, double p, double bound, long it,
 /* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
+/* Shared by that CG and FIRE on pressures with a hardness
+ * (solver_fire_free.c), from solver_cg_plastic.c: the level c fitted over
+ * 0 < sigma < H (returns the count of sigma > 0); the load restored to
+ * mean p within [0, H] (disp: G sigma kept in step, or NULL; returns 1 if
+ * G sigma is stale); the convergence measure of (u', sigma) from s->u =
+ * G sigma (leaves u', the contact set, level and energy). */
+size_t rc__plastic_level(const rc_solver *s, double *c);
+int rc__plastic_restore_load(rc_solver *s, double p, double *disp);
+double rc__plastic_check(rc_solver *s, double p);
+/* The start of both: the CG's (rc__cg_initial_pressure) clipped at H,
+ * the load restored. */
+void rc__plastic_initial_pressure(rc_solver *s, double p);
+
+/* Whether a point with pressure sigma and gap g takes part in a bounded
+ * step: free (0 < sigma < H), or its force f = -g pointing into the box
+ * (at zero and penetrating, or at H with an open gap). */
+static inline int
+rc__plastic_active(double sigma, double g, double H)
+{
+	return (sigma > 0 && sigma < H) || (sigma <= 0 && g < 0) ||
+	    (sigma >= H && g > 0);
+}
 
 /* FIRE's parameters, shared by its three loops (solver_fire.c, which
  * says what each is and how it was tuned; solver_fire_free.c;

@@ -229,8 +229,8 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 		tool_bad(t, "--adhesion: solved by --method fire only (adhesion "
 		    "makes the problem non-convex; the CG solves a convex one)");
 	if (o->given_hardness)
-		tool_bad(t, "--adhesion with --hardness: plasticity needs --method "
-		    "cg, adhesion --method fire; not combined");
+		tool_bad(t, "--adhesion with --hardness: not combined (the "
+		    "adhesive FIRE loop has no bounded-pressure variant)");
 	if (o->given_layer && o->napproach)
 		tool_bad(t, "--adhesion with --thickness: load control (-p, "
 		    "--pressure-abs) only, not --approach");
@@ -259,14 +259,6 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 	if (o->napproach && (o->ck_path != NULL || o->resume_path != NULL))
 		tool_bad(t, "--approach: --checkpoint and --resume are for load "
 		    "control (-p, --pressure-abs) only");
-	if (o->given_hardness && rc_solver_opts_plastic(&o->so)) {
-		if (o->so.method != RC_METHOD_CG)
-			tool_bad(t, "--hardness: perfect plasticity is solved by "
-			    "the CG method only; add --method cg");
-		if (o->napproach)
-			tool_bad(t, "--hardness: with -p or --pressure-abs only, "
-			    "not --approach");
-	}
 	if (o->given_layer) {
 		if (!(o->so.thickness > 0))
 			tool_bad(t, "--substrate, --poisson: describe a layer; "

@@ -135,7 +135,7 @@ parse_options(struct run *r, int argc, char **argv)
 		    rc_kernel_name(o->so.kernel));
 	if (o->given_hardness)
 		tool_bad(t, "--hardness: not in the MPI build (perfect "
-		    "plasticity needs the serial gfmd-solve with --method cg)");
+		    "plasticity is solved by the serial gfmd-solve)");
 	if (o->given_adhesion)
 		tool_bad(t, "--adhesion: not in the MPI build (adhesion is "
 		    "solved by the serial gfmd-solve)");
