@@ -75,7 +75,7 @@ layer_table(rc_halfspace *e, double dx, double dy, double thickness,
 	return 0;
 }
 
-/* Long: the checks, the plans, the table (Love's or the layer's) and its
+/* The checks, the plans, the table (Love's or the layer's) and its
  * spectrum with its smallest eigenvalue. */
 int
 rc_halfspace_init_layer(rc_halfspace *e, size_t nx, size_t ny, double lx,

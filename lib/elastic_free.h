@@ -29,6 +29,12 @@
  * is real), and each application is one r2c of the zero-padded pressure,
  * a product, one c2r and a crop: one transform pair of 4N points.
  *
+ * An elastic layer on a rigid substrate (layer.h) replaces C by its own
+ * pixel compliance C_L (elastic_layer_free.h), exponentially local;
+ * everything else is the same.  The padded circulant must be positive
+ * definite for the solvers (the pressures minimise sigma.C sigma / 2;
+ * adhesion inverts it): eig_min, its smallest eigenvalue, tells.
+ *
  * Memory: the padded real buffer (4N doubles), its half spectrum
  * (about 2N complex) and the kernel's real spectrum (about 2N doubles):
  * about 80 bytes per point of the given area.

@@ -99,7 +99,7 @@ rc_layer_green_correction(const rc_layer_pixel *t, double r)
 	return f_eval(t, r / t->thickness) / (M_PI * t->modulus * t->thickness);
 }
 
-/* Long: the s-quadrature nodes, then each segment's Chebyshev
+/* The s-quadrature nodes, then each segment's Chebyshev
  * coefficients from F at its nodes. */
 int
 rc_layer_pixel_init(rc_layer_pixel *t, double thickness,

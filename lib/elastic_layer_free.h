@@ -18,27 +18,29 @@
  * Love's closed form (elastic_free.h) minus a smooth correction.
  *
  * 1 / k_q = 2 / (q E* phi(q d)) is even and analytic in q (1/phi is odd
- * in t), so G_L decays exponentially: its slowest decay is set by the
- * complex zero of phi's numerator nearest the real axis (slip: 2t +
- * sinh 2t = 0, t = 2.1061 + 1.1254i; bonded nu = 0.3: t = 1.4677 +
- * 0.6011i, nu = 0.5: 1.4162 + 0.5268i).  Measured: |G_L(r)| r E* <
- * 1e-16 beyond r = 40 d for every substrate and nu in [0, 0.5]
- * (RC_LAYER_CUTOFF); C_L is taken as 0 for pixels beyond that distance,
- * which makes the table's support finite (a thin layer: a few pixels).
+ * in t), so G_L decays exponentially, at a rate set by the zero of
+ * phi's numerator nearest the real axis: slowest for a bonded
+ * incompressible layer, e^(-0.73 r/d) (cos 2 tau - 2 tau^2 + 1 = 0, t =
+ * i tau); about e^(-1.8 r/d) measured for slip.  Measured: pi E* r
+ * |G_L(r)| < 1e-14 beyond r = 48 d (slip; bonded with nu = 0.3 and
+ * 0.5, the slowest), the round-off of 1/r - F there (RC_LAYER_CUTOFF);
+ * C_L is
+ * taken as 0 for pixels beyond that distance, which makes the table's
+ * support finite (a thin layer: a few pixels).
  *
  * Construction (rc_layer_pixel_init): F on [0, rho_max] by Chebyshev
  * series of order RC_LAYER_CHEB_ORDER on segments of length d (each
- * node an integral over s in [0, 27], where w < 1e-20, by composite
- * 16-point Gauss-Legendre on panels short against the oscillation of
+ * node an integral over s in [0, 24], where w < 1e-17, by composite
+ * 16-point Gauss-Legendre on panels short against the phase of
  * J0(s rho) and the scale of w); int_pixel D by tensor Gauss-Legendre on
- * sub-panels no wider than a = max(distance of the pixel from the
- * origin, d), the distance to D's nearest complex singularity, with the
- * order chosen from the Bernstein ellipse that distance allows
+ * sub-panels no wider than d (D is analytic to a distance 2d from the
+ * real plane), the order chosen from the Bernstein ellipse that allows
  * (a rule that aims at round-off; the error is measured in
- * tests/test_layer.c).  A pixel that contains the whole disk r <= 40 d
- * about its observation point gets C_L = 1/k(q -> 0) exactly (the
- * integral of G_L over the plane): a layer much thinner than a pixel is
- * the Winkler foundation, diagonal, without quadrature.
+ * tests/test_layer.c: 1e-14 for F, 8e-16 C(0) for the pixel integrals).
+ * A pixel that contains the whole disk r <= 48 d about its observation
+ * point gets C_L = 1/k(q -> 0) exactly (the integral of G_L over the
+ * plane): a layer thinner than dx/96 is the Winkler foundation,
+ * diagonal, without a table.
  */
 #ifndef RC_ELASTIC_LAYER_FREE_H
 #define RC_ELASTIC_LAYER_FREE_H
@@ -48,7 +50,7 @@
 #include "layer.h"
 #include "rc_err.h"
 
-#define RC_LAYER_CUTOFF		48.0	/* r_cut / d */
+#define RC_LAYER_CUTOFF		48.0	/* r_cut / d (above) */
 #define RC_LAYER_CHEB_ORDER	16
 #define RC_LAYER_GAUSS_MAX	16	/* Gauss points per sub-panel side */
 
