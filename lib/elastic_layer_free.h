@@ -78,7 +78,9 @@ void rc_layer_pixel_release(rc_layer_pixel *t);
  * when some pixel needs it (n_seg > 0: not for a layer so thin that
  * r_cut is within half a pixel, whose C_L is diagonal). */
 double rc_layer_green_correction(const rc_layer_pixel *t, double r);
-/* C_L(x, y) per unit pressure (0 beyond r_cut). */
+/* C_L(x, y) per unit pressure (0 beyond r_cut), (x, y) an offset of
+ * the pixel lattice (multiples of dx, dy: the thin layer's shortcut
+ * above covers only those). */
 double rc_layer_pixel_compliance(const rc_layer_pixel *t, double x, double y);
 /* 1 / k(q -> 0): d / E* slip, d (1 - 2nu) / (E* (1 - nu)^2) bonded. */
 double rc_layer_compliance0(double modulus, double thickness,
