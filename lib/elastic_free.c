@@ -6,6 +6,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "elastic_layer_free.h"
 #include "grid.h"
 
 /* Integral of 1/r over [0, x] x [0, y], odd in x and in y. */
@@ -40,10 +41,54 @@ int
 rc_halfspace_init(rc_halfspace *e, size_t nx, size_t ny, double lx,
     double ly, double modulus, enum rc_fft_effort effort, rc_err *err)
 {
+	return rc_halfspace_init_layer(e, nx, ny, lx, ly, modulus, 0,
+	    RC_SUBSTRATE_NONE, 0, effort, err);
+}
+
+/* The layer's C_L (elastic_layer_free.h) in wrap-around order: the
+ * quadrant of offsets 0 .. n per axis, mirrored (C_L is even in x and in
+ * y, and costs a quadrature per offset). */
+static int
+layer_table(rc_halfspace *e, double dx, double dy, double thickness,
+    enum rc_substrate substrate, double poisson, rc_err *err)
+{
+	size_t i, j, nx = e->nx, ny = e->ny, px = 2 * nx, py = 2 * ny;
+	double *c = e->fft.real;
+	rc_layer_pixel t;
+
+	if (rc_layer_pixel_init(&t, thickness, substrate, poisson,
+	    e->modulus, dx, dy, hypot((double)(nx + 1) * dx,
+	    (double)(ny + 1) * dy), err) != 0)
+		return -1;
+#pragma omp parallel for private(i) schedule(dynamic)
+	for (j = 0; j <= ny; j++)
+		for (i = 0; i <= nx; i++)
+			c[j * px + i] = rc_layer_pixel_compliance(&t,
+			    (double)i * dx, (double)j * dy);
+	rc_layer_pixel_release(&t);
+	for (j = 0; j < py; j++) {
+		const double *src = c + (j <= ny ? j : py - j) * px;
+
+		for (i = 0; i < px; i++)
+			c[j * px + i] = src[i <= nx ? i : px - i];
+	}
+	return 0;
+}
+
+/* The checks, the plans, the table (Love's or the layer's) and its
+ * spectrum with its smallest eigenvalue. */
+int
+rc_halfspace_init_layer(rc_halfspace *e, size_t nx, size_t ny, double lx,
+    double ly, double modulus, double thickness, enum rc_substrate substrate,
+    double poisson, enum rc_fft_effort effort, rc_err *err)
+{
 	size_t i, j, px = 2 * nx, py = 2 * ny, pxc;
 	double dx = lx / (double)nx, dy = ly / (double)ny, scale;
+	int layer;
 
 	memset(e, 0, sizeof(*e));
+	if ((layer = rc_layer_check(thickness, substrate, poisson, err)) < 0)
+		return -1;
 	if (!(modulus > 0) || !isfinite(modulus))
 		return rc_seterr(err, "contact modulus must be positive and finite");
 	if (nx < 2 || ny < 2)
@@ -65,18 +110,29 @@ rc_halfspace_init(rc_halfspace *e, size_t nx, size_t ny, double lx,
 		    "padded kernel)", pxc * py * sizeof(double));
 	}
 	/* C / E* in wrap-around order, symmetric in each axis. */
+	if (layer) {
+		if (layer_table(e, dx, dy, thickness, substrate, poisson,
+		    err) != 0) {
+			rc_halfspace_release(e);
+			return -1;
+		}
+	} else
 #pragma omp parallel for private(i) schedule(static)
-	for (j = 0; j < py; j++)
-		for (i = 0; i < px; i++)
-			e->fft.real[j * px + i] = rc_love_pixel(offset(i, nx) * dx,
-			    offset(j, ny) * dy, dx, dy) / modulus;
+		for (j = 0; j < py; j++)
+			for (i = 0; i < px; i++)
+				e->fft.real[j * px + i] = rc_love_pixel(
+				    offset(i, nx) * dx, offset(j, ny) * dy,
+				    dx, dy) / modulus;
 	e->self = e->fft.real[0];
 	rc_fft_forward(&e->fft);
 	/* Even and real: the spectrum is real up to round-off; keep its real
 	 * part with the 1/(4N) of the unnormalised round trip. */
 	scale = 1.0 / ((double)px * (double)py);
-	for (i = 0; i < pxc * py; i++)
+	e->eig_min = HUGE_VAL;
+	for (i = 0; i < pxc * py; i++) {
 		e->kernel[i] = creal(e->fft.spec[i]) * scale;
+		e->eig_min = fmin(e->eig_min, creal(e->fft.spec[i]));
+	}
 	return 0;
 }
 

@@ -29,6 +29,12 @@
  * is real), and each application is one r2c of the zero-padded pressure,
  * a product, one c2r and a crop: one transform pair of 4N points.
  *
+ * An elastic layer on a rigid substrate (layer.h) replaces C by its own
+ * pixel compliance C_L (elastic_layer_free.h), exponentially local;
+ * everything else is the same.  The padded circulant must be positive
+ * definite for the solvers (the pressures minimise sigma.C sigma / 2;
+ * adhesion inverts it): eig_min, its smallest eigenvalue, tells.
+ *
  * Memory: the padded real buffer (4N doubles), its half spectrum
  * (about 2N complex) and the kernel's real spectrum (about 2N doubles):
  * about 80 bytes per point of the given area.
@@ -37,11 +43,13 @@
 #define RC_ELASTIC_FREE_H
 
 #include "fft.h"
+#include "layer.h"
 
 typedef struct rc_halfspace {
 	size_t nx, ny, n;	/* the given area; n = nx * ny */
 	double modulus;		/* E* */
 	double self;		/* C(0, 0): lift of a pixel under its own unit pressure */
+	double eig_min;		/* the padded circulant's smallest eigenvalue */
 	double *kernel;		/* real spectrum of C / (4N), 2ny * (nx + 1) */
 	rc_fft fft;		/* the 2nx x 2ny plans and buffers */
 	unsigned long n_pairs;	/* applications (padded transform pairs) */
@@ -54,6 +62,13 @@ double rc_love_pixel(double x, double y, double dx, double dy);
  * displacement grows logarithmically with distance). */
 int rc_halfspace_init(rc_halfspace *e, size_t nx, size_t ny,
     double lx, double ly, double modulus, enum rc_fft_effort effort,
+    rc_err *err);
+/* The same with an elastic layer (layer.h; thickness 0 and
+ * RC_SUBSTRATE_NONE: the half space) instead of the half space: the
+ * table holds the layer's pixel compliance C_L of elastic_layer_free.h. */
+int rc_halfspace_init_layer(rc_halfspace *e, size_t nx, size_t ny,
+    double lx, double ly, double modulus, double thickness,
+    enum rc_substrate substrate, double poisson, enum rc_fft_effort effort,
     rc_err *err);
 void rc_halfspace_release(rc_halfspace *e);
 /* out = w = C * sigma on the given area (nx*ny values each; out may be

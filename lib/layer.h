@@ -35,6 +35,9 @@
  * so leaves the contact unchanged under load control; it enters the
  * approach (the substrate's travel, p / k_0 more than the surface's) and
  * the elastic energy (p^2 / (2 k_0) per area).
+ *
+ * Free boundaries need the layer in real space: its pixel compliance,
+ * from the inverse transform of 1 / k_q (elastic_layer_free.h).
  */
 #ifndef RC_LAYER_H
 #define RC_LAYER_H

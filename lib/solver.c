@@ -47,6 +47,12 @@
 
 #include "clock.h"
 
+/* Free boundaries: the padded compliance's smallest eigenvalue, relative
+ * to C(0, 0), below which it is refused as singular (its round-off is
+ * ~1e-13; measured on 64^2: 0.58 for the half space and any layer with
+ * Poisson 0.3, 4e-5 for a bonded incompressible one with d = 4 dx). */
+#define RC_FREE_EIG_MIN	1e-9
+
 void
 rc_solver_defaults(rc_solver_opts *o)
 {
@@ -166,13 +172,6 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		    "image of its sum (elastic.h)");
 		return NULL;
 	}
-	if (rc_layer_check(o->thickness, o->substrate, o->poisson, err) > 0 &&
-	    o->boundary == RC_BOUNDARY_FREE) {
-		rc_seterr(err, "a finite thickness needs periodic boundaries: "
-		    "the layer's response is known per Fourier mode (layer.h), "
-		    "not as the real-space Green's function free boundaries use");
-		return NULL;
-	}
 	if (o->max_iter < 1) {
 		rc_seterr(err, "max_iter must be at least 1");
 		return NULL;
@@ -196,12 +195,28 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	 * the periodic stiffness as its inverse mass (solver_fire_free.c);
 	 * with adhesion the operator is the padded one, made later from the
 	 * compliance (solver_fire_adh_free.c). */
-	if ((s->free_bc && rc_halfspace_init(&s->fel, s->nx, s->ny, s->lx,
-	    s->ly, o->modulus, o->fft_effort, err) != 0) ||
+	if ((s->free_bc && rc_halfspace_init_layer(&s->fel, s->nx, s->ny,
+	    s->lx, s->ly, o->modulus, o->thickness, o->substrate, o->poisson,
+	    o->fft_effort, err) != 0) ||
 	    ((!s->free_bc || (o->method == RC_METHOD_FIRE &&
 	    !rc_solver_opts_adhesive(o))) &&
 	    rc_elastic_init(&s->el, s->nx, s->ny, s->lx, s->ly, o->modulus,
 	    o->fft_effort, err) != 0)) {
+		rc_halfspace_release(&s->fel);
+		free(s);
+		return NULL;
+	}
+	/* FIRE on pressures and CG minimise sigma.C sigma / 2, and the
+	 * adhesive free FIRE inverts C: all need C positive definite.  A
+	 * layer can lose it: an incompressible bonded layer keeps its
+	 * volume, its compliance at q -> 0 (the mean eigenvalue) is 0. */
+	if (s->free_bc && !(s->fel.eig_min > RC_FREE_EIG_MIN * s->fel.self)) {
+		rc_seterr(err, "free boundaries need a positive definite "
+		    "compliance: this layer's smallest eigenvalue is %.3g of "
+		    "its self-compliance (an incompressible bonded layer, "
+		    "Poisson 0.5, has none at q = 0: give Poisson < 0.5)",
+		    s->fel.eig_min / s->fel.self);
+		rc_elastic_free(&s->el);
 		rc_halfspace_release(&s->fel);
 		free(s);
 		return NULL;
@@ -213,16 +228,22 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		free(s);
 		return NULL;
 	}
+	/* A layer: the periodic operator's k_q (free FIRE: its inverse
+	 * mass); the uniform compression only where the periodic body has
+	 * no rigid level (free: in C_L, the approach the substrate's travel). */
 	s->k_uniform = HUGE_VAL;
 	if (rc_layer_check(o->thickness, o->substrate, o->poisson, NULL) > 0) {
-		if (rc_elastic_set_layer(&s->el, s->lx, s->ly, o->thickness,
-		    o->substrate, o->poisson, err) != 0) {
+		if (s->el.stiffness != NULL && rc_elastic_set_layer(&s->el,
+		    s->lx, s->ly, o->thickness, o->substrate, o->poisson,
+		    err) != 0) {
 			rc_elastic_free(&s->el);
+			rc_halfspace_release(&s->fel);
 			free(s);
 			return NULL;
 		}
-		s->k_uniform = rc_layer_uniform_stiffness(o->modulus,
-		    o->thickness, o->poisson);
+		if (!s->free_bc)
+			s->k_uniform = rc_layer_uniform_stiffness(o->modulus,
+			    o->thickness, o->poisson);
 	}
 	s->height = fftw_alloc_real(n);
 	s->sigma = fftw_alloc_real(n);

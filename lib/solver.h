@@ -45,7 +45,8 @@ typedef struct rc_solver_opts {
 	 * (default) or the lattice-consistent pixel one; FIRE's masses and
 	 * CG's compliance both follow it.  Free boundaries always solve with
 	 * Love's pixel compliance (elastic_free.h), the discretisation of
-	 * RC_KERNEL_PIXEL, and ignore it.  The pixel kernel has no layer. */
+	 * RC_KERNEL_PIXEL, and ignore it.  The periodic pixel kernel has no
+	 * layer. */
 	enum rc_kernel kernel;
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
 	 * 0 or +inf: no cap (the default).  Both methods, both boundary
@@ -55,8 +56,10 @@ typedef struct rc_solver_opts {
 	double hardness;
 	/* An elastic layer of this thickness (lateral length units) on a
 	 * rigid substrate instead of the half space: k_q of layer.h.  0 with
-	 * RC_SUBSTRATE_NONE: the half space (the default).  Periodic
-	 * boundaries only; poisson is the layer's ratio, in (-1, 0.5]. */
+	 * RC_SUBSTRATE_NONE: the half space (the default).  Either boundary
+	 * kind (free: the pixel compliance of elastic_layer_free.h, refused
+	 * when it is not positive definite); poisson is the layer's ratio,
+	 * in (-1, 0.5]. */
 	double thickness;
 	enum rc_substrate substrate;
 	double poisson;
@@ -151,8 +154,12 @@ int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
  *   periodic: delta = max h - <u>, the mean surface height being the only
  *             reference of a periodic body (so delta = mean-gap change:
  *             (max h - <h>) - <u - h>);
- *   a layer:  delta = max h - <u> + p / k_0, the travel of the rigid
- *             substrate (k_0 of layer.h: the uniform compression).
+ *   a layer:  periodic, delta = max h - <u> + p / k_0, the travel of
+ *             the rigid substrate (k_0 of layer.h: the uniform
+ *             compression); free, max h - c as above, c the undeformed
+ *             top of the layer far from the area, so again the
+ *             substrate's travel (the layer's compliance C_L holds all
+ *             of its compression: no p / k_0 term).
  * For a Hertz indenter h = -r^2/(2R) (free) this is the a^2/R of
  * Hertz. */
 double rc_solver_approach(const rc_solver *s);
@@ -166,7 +173,7 @@ const unsigned char *rc_solver_contact(const rc_solver *s);
 /* Elastic energy per unit area, (1/2) sum_q (q E* / 2) |u_q|^2 / N^2
  * (periodic; a layer: its k_q, plus p^2 / (2 k_0) of the uniform
  * compression); free: (1/2) <sigma w> over the given area, the work of the
- * pressure per unit area of it. */
+ * pressure per unit area of it (a layer's too). */
 double rc_solver_elastic_energy(const rc_solver *s);
 /* Mean gap <u - h>. */
 double rc_solver_mean_gap(const rc_solver *s);

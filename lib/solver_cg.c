@@ -36,7 +36,8 @@
  * against the far field.  There is no stiffness operator K to evaluate
  * the residual with, so the measure is the bound itself, with the largest
  * stiffness of the same grid were it periodic, k_max = (pi/2) E*
- * sqrt(dx^-2 + dy^-2), as the scale that turns a gap error into a
+ * sqrt(dx^-2 + dy^-2) (a layer: times its phi at that q, layer.h), as
+ * the scale that turns a gap error into a
  * pressure: residual = max(k_max rms(u' - u) / p, |<sigma> - p| / p).
  * It is computed without a transform.
  */
@@ -102,10 +103,13 @@ double
 rc__stiffness_max(const rc_solver *s)
 {
 	double dx = s->lx / (double)s->nx, dy = s->ly / (double)s->ny;
+	double q = M_PI * sqrt(1 / (dx * dx) + 1 / (dy * dy));
 
 	if (!s->free_bc)
 		return s->el.k_max;
-	return 0.5 * M_PI * s->opts.modulus * sqrt(1 / (dx * dx) + 1 / (dy * dy));
+	/* a layer: its k_q at the zone corner (stiffer than the half space) */
+	return 0.5 * q * s->opts.modulus * rc_layer_factor(q * s->opts.thickness,
+	    s->opts.substrate, s->opts.poisson);
 }
 
 /* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */

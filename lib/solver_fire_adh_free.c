@@ -11,10 +11,11 @@
  * The padded grid (2nx x 2ny): Love's compliance C in wrap-around order
  * is a circulant whose eigenvalues Chat_q (elastic_free.h's kernel times
  * 4N) are all positive (measured: 0.58069 dx / E* at the zone corner up
- * to sum C at q = 0, 8x8 to 256^2 grids).  On it, displacements
- * w = C * f of forces f that vanish off the given area are exactly the
- * free-boundary ones on that area (Hockney's argument).  So the
- * padded height field u = c + w, c the rigid level, with stiffness
+ * to sum C at q = 0, 8x8 to 256^2 grids; a layer's C_L,
+ * elastic_layer_free.h, is refused by solver.c unless they are too).  On
+ * it, displacements w = C * f of forces f that vanish off the given area
+ * are exactly the free-boundary ones on that area (Hockney's argument).
+ * So the padded height field u = c + w, c the rigid level, with stiffness
  * kappa_q = 1 / Chat_q, and no interaction off the area (h = -inf
  * there), is the free body: at equilibrium the traction kappa (u - c)
  * vanishes off the area, so it holds only the pressures of the area.

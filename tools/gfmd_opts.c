@@ -231,9 +231,11 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 	if (o->given_hardness)
 		tool_bad(t, "--adhesion with --hardness: not combined (the "
 		    "adhesive FIRE loop has no bounded-pressure variant)");
-	if (o->given_layer && o->napproach)
+	/* free boundaries hold the rigid level, the substrate's travel */
+	if (o->given_layer && o->napproach && o->boundary != RC_BOUNDARY_FREE)
 		tool_bad(t, "--adhesion with --thickness: load control (-p, "
-		    "--pressure-abs) only, not --approach");
+		    "--pressure-abs) only, not --approach, on periodic "
+		    "boundaries (add --boundary free)");
 }
 
 /* Long: every check between options in one place, so that all problems
@@ -271,10 +273,6 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 				    "NU (its uniform compression, and the bonded "
 				    "kernel, depend on it)");
 		}
-		if (o->boundary == RC_BOUNDARY_FREE)
-			tool_bad(t, "--thickness: a layer needs periodic "
-			    "boundaries (its response is known per Fourier "
-			    "mode only); drop --boundary free");
 	}
 	if (o->given_kernel) {
 		if (o->boundary == RC_BOUNDARY_FREE &&

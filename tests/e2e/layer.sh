@@ -4,7 +4,8 @@
 # a layer carries p + k_q A cos (lib/layer.h's k_q, computed here by awk
 # from the closed form) with both methods, the approach adds p/k_0, a
 # very thick layer is the half space, displacement control past full
-# contact, the rows, the refusals, and contact-stats grouping by layer.
+# contact, the rows, the refusals, free boundaries (FIRE = CG, thick =
+# the half space, adhesion), and contact-stats grouping by layer.
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
@@ -64,12 +65,42 @@ check_status "--poisson without --thickness" 2 gfmd-solve --poisson 0.3 -p 0.1 "
 check_status "--thickness 0" 2 gfmd-solve --thickness 0 --poisson 0.3 -p 0.1 "$T/r.surf"
 check_status "--poisson 0.6" 2 gfmd-solve --thickness 0.1 --poisson 0.6 -p 0.1 "$T/r.surf"
 check_status "--substrate glued" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --substrate glued -p 0.1 "$T/r.surf"
-check_status "--thickness with --boundary free" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --boundary free -p 0.1 "$T/r.surf"
 check_status "--thickness with --checkpoint: accepted (recorded)" 0 gfmd-solve -q --thickness 0.1 --poisson 0.3 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
+check_status "--thickness --kernel pixel (periodic)" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --kernel pixel -p 0.1 "$T/r.surf"
+
+# --- Free boundaries (the layer's pixel compliance, lib/elastic_layer_free.h).
+# A non-periodic map is solved with free boundaries, a layer included;
+# FIRE and CG agree on it; a layer 100 times thicker than the area is
+# the free half space (its pressures to ~1e-7: the contact set, and the
+# approach less by D(0) F = F(0) p L^2 / (pi d), F(0) = 1.37685 bonded
+# nu 0.3, computed in test_layer.c).
 surfgen -q -n 32 --seed 2 | surfwarp --detrend plane -o "$T/np.surf"
-check_status "--thickness on a non-periodic map without --boundary periodic" 1 \
-    gfmd-solve -q --thickness 0.1 --poisson 0.3 -p 0.1 "$T/np.surf"
-check "non-periodic map: the message names periodic boundaries" grep -q "periodic" "$T/stderr"
+for m in fire cg; do
+	gfmd-solve -q -j 1 --method $m --tol 1e-10 --pressure-abs 0.02 --thickness 0.05 \
+	    --poisson 0.3 --substrate bonded "$T/np.surf" > "$T/f_$m.tsv"
+	check "free layer, $m: converges" test $? -eq 0
+	check "free layer, $m: free boundaries in the row" test "$(col "$T/f_$m.tsv" boundary)" = free
+done
+check_rel "free layer: FIRE's n_c = CG's" "$(col "$T/f_fire.tsv" n_c)" "$(col "$T/f_cg.tsv" n_c)" 0
+check_rel "free layer: FIRE's approach = CG's" "$(col "$T/f_fire.tsv" approach)" "$(col "$T/f_cg.tsv" approach)" 1e-8
+gfmd-solve -q -j 1 --method cg --tol 1e-10 --pressure-abs 0.02 "$T/np.surf" > "$T/f_half.tsv"
+gfmd-solve -q -j 1 --method cg --tol 1e-10 --pressure-abs 0.02 --thickness 100 --poisson 0.3 "$T/np.surf" > "$T/f_thick.tsv"
+check_rel "free thick layer: the half space's n_c" "$(col "$T/f_thick.tsv" n_c)" "$(col "$T/f_half.tsv" n_c)" 0
+check_rel "free thick layer: approach less by D(0) F" \
+    "$(awk -v a="$(col "$T/f_half.tsv" approach)" -v b="$(col "$T/f_thick.tsv" approach)" 'BEGIN { printf "%.17g\n", a - b }')" \
+    "$(awk 'BEGIN { printf "%.17g\n", 1.37685 * 0.02 / (3.14159265358979 * 100) }')" 1e-4
+check_status "free incompressible thin bonded layer: refused" 1 \
+    gfmd-solve -q --thickness 1e-4 --poisson 0.5 --boundary free -p 0.1 "$T/r.surf"
+check "refused: the message says why" grep -q "positive definite" "$T/stderr"
+# adhesion through the same compliance, displacement control allowed on
+# free boundaries (the rigid level is the substrate's travel)
+gfmd-solve -q -j 1 --adhesion 1e-4 --range 0.01 --approach 0.002 --thickness 0.05 \
+    --poisson 0.3 --boundary free "$T/np.surf" > "$T/f_adh.tsv"
+check "free layer with adhesion under --approach: converges" test $? -eq 0
+check_rel "free layer with adhesion: the approach held" "$(col "$T/f_adh.tsv" approach)" 0.002 1e-9
+check_status "periodic layer with adhesion under --approach: refused" 2 \
+    gfmd-solve -q --adhesion 1e-4 --range 0.01 --approach 0.002 --thickness 0.05 \
+    --poisson 0.3 --boundary periodic "$T/np.surf"
 
 # --- Plasticity on a layer: a cap that never binds (H = 4000 p) gives
 # the elastic layer's contact; one that binds (H = 4 p) flattens points.
