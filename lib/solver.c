@@ -158,7 +158,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	}
 	if (rc_solver_opts_adhesive(o) && rc_solver_opts_plastic(o)) {
 		rc_seterr(err, "adhesion with a hardness: not combined (the "
-		    "adhesive FIRE loop has no bounded-pressure variant)");
+		    "plastic model keeps no history, so it has no unloading "
+		    "branch, where pull-off and hysteresis happen)");
 		return NULL;
 	}
 	if (o->kernel != RC_KERNEL_CONTINUUM && o->kernel != RC_KERNEL_PIXEL) {

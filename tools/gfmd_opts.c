@@ -230,7 +230,8 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 		    "makes the problem non-convex; the CG solves a convex one)");
 	if (o->given_hardness)
 		tool_bad(t, "--adhesion with --hardness: not combined (the "
-		    "adhesive FIRE loop has no bounded-pressure variant)");
+		    "plastic model keeps no history, so it has no unloading "
+		    "branch, where pull-off and hysteresis happen)");
 	/* free boundaries hold the rigid level, the substrate's travel */
 	if (o->given_layer && o->napproach && o->boundary != RC_BOUNDARY_FREE)
 		tool_bad(t, "--adhesion with --thickness: load control (-p, "

@@ -78,7 +78,7 @@ done
 
 # --- Refusals.
 check_status "--hardness with --adhesion" 2 gfmd-solve --hardness 1 --adhesion 0.01 --range 0.01 -p 0.1 "$T/r.surf"
-check "--hardness with --adhesion: the message says why" grep -q "bounded-pressure" "$T/stderr"
+check "--hardness with --adhesion: the message says why" grep -q "no unloading" "$T/stderr"
 check_status "--hardness 0" 2 gfmd-solve --method cg --hardness 0 -p 0.1 "$T/r.surf"
 check_status "--hardness -1" 2 gfmd-solve --method cg --hardness -1 -p 0.1 "$T/r.surf"
 check_status "--hardness with --checkpoint: accepted (recorded)" 0 gfmd-solve -q --method cg --hardness 1 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
