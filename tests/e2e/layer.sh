@@ -5,7 +5,8 @@
 # from the closed form) with both methods, the approach adds p/k_0, a
 # very thick layer is the half space, displacement control past full
 # contact, the rows, the refusals, free boundaries (FIRE = CG, thick =
-# the half space, adhesion), and contact-stats grouping by layer.
+# the half space, adhesion), plasticity and Dugdale adhesion on a free
+# layer, and contact-stats grouping by layer.
 . "$RC_TOP/tests/e2e/lib.sh"
 T=$T_TMP
 
@@ -110,6 +111,31 @@ gfmd-solve -q -j 1 --method cg -p 0.05 --thickness 0.1 --poisson 0.3 --hardness 
 check_rel "layer, H = 4000 p: the elastic layer's n_c" "$(col "$T/lh.tsv" n_c)" "$(col "$T/le.tsv" n_c)" 0
 check_rel "layer, H = 4000 p: the elastic layer's approach" "$(col "$T/lh.tsv" approach)" "$(col "$T/le.tsv" approach)" 1e-6
 check_range "layer, H = 4 p: plastic points" "$(col "$T/lp.tsv" a_plastic)" 1e-9 1
+# The effects combined on free boundaries: FIRE (on pressures) and the
+# plastic CG solve one minimisation over the same box with the layer's
+# pixel compliance, so their contact and plastic sets agree to the point
+# and their approaches to the tolerance (tol 1e-9: 1e-7 relative).
+for m in fire cg; do
+	gfmd-solve -q -j 1 --method $m --tol 1e-9 --boundary free --pressure-abs 0.05 \
+	    --thickness 0.1 --poisson 0.3 --hardness 0.2 "$T/r.surf" > "$T/fp_$m.tsv"
+	check "free layer with a hardness, $m: converges" test $? -eq 0
+done
+check_rel "free plastic layer: FIRE's n_c = CG's" "$(col "$T/fp_fire.tsv" n_c)" "$(col "$T/fp_cg.tsv" n_c)" 0
+check_rel "free plastic layer: FIRE's a_plastic = CG's" "$(col "$T/fp_fire.tsv" a_plastic)" "$(col "$T/fp_cg.tsv" a_plastic)" 0
+check_range "free plastic layer: some points flow" "$(col "$T/fp_cg.tsv" a_plastic)" 1e-9 1
+check_rel "free plastic layer: FIRE's approach = CG's" "$(col "$T/fp_fire.tsv" approach)" "$(col "$T/fp_cg.tsv" approach)" 1e-7
+# Dugdale's law on a free layer: the load that an approach needed gives
+# that approach back under load control (a stable state is the same
+# equilibrium under either control; tol 1e-9).
+gfmd-solve -q -j 1 --tol 1e-9 --adhesion 1e-4 --range 0.01 --law dugdale --approach 0.03 \
+    --thickness 0.05 --poisson 0.3 --boundary free "$T/np.surf" > "$T/fd_a.tsv"
+check "free layer, Dugdale, --approach: converges" test $? -eq 0
+gfmd-solve -q -j 1 --tol 1e-9 --adhesion 1e-4 --range 0.01 --law dugdale \
+    --pressure-abs "$(col "$T/fd_a.tsv" p)" --thickness 0.05 --poisson 0.3 \
+    --boundary free "$T/np.surf" > "$T/fd_p.tsv"
+check "free layer, Dugdale, the load: converges" test $? -eq 0
+check_rel "free layer, Dugdale: the load gives the approach back" "$(col "$T/fd_p.tsv" approach)" 0.03 1e-6
+check_rel "free layer, Dugdale: the same contact" "$(col "$T/fd_p.tsv" n_c)" "$(col "$T/fd_a.tsv" n_c)" 0
 
 # --- contact-stats: the layer is a key (two thicknesses, two groups).
 gfmd-solve -q -j 1 -p 0.05 --thickness 0.1 --poisson 0.3 "$T/r.surf" > "$T/l1.tsv"
