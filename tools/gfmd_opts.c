@@ -231,11 +231,6 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 	if (o->given_hardness)
 		tool_bad(t, "--adhesion with --hardness: not combined (the "
 		    "adhesive FIRE loop has no bounded-pressure variant)");
-	/* free boundaries hold the rigid level, the substrate's travel */
-	if (o->given_layer && o->napproach && o->boundary != RC_BOUNDARY_FREE)
-		tool_bad(t, "--adhesion with --thickness: load control (-p, "
-		    "--pressure-abs) only, not --approach, on periodic "
-		    "boundaries (add --boundary free)");
 }
 
 /* Long: every check between options in one place, so that all problems
