@@ -142,7 +142,10 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * rc_solver_solve. */
 /* With adhesion: any finite delta, solved directly by FIRE with the mean
  * height (free boundaries: the rigid level) held (solver_fire_adh.c,
- * solver_fire_adh_free.c), which traces unstable branches too. */
+ * solver_fire_adh_free.c), which traces unstable branches too; a periodic
+ * layer with its rigid substrate held at delta instead (the mean mode on
+ * the spring k_0, the load p = k_0 (<u> - max h + delta) following the
+ * state; no full-contact bound), so the approach is delta to rounding. */
 int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err);
 

@@ -70,27 +70,27 @@ eval(struct trial *tr, double x, double *f, rc_err *err)
 	return tr->s->opts.stop && *tr->s->opts.stop ? 1 : 0;
 }
 
-/* Adhesion: FIRE with the mean height held (solver_fire_adh.c); not past
- * full contact, not with a layer (its approach moves with p / k_0). */
+/* Adhesion: FIRE with the mean height held (solver_fire_adh.c; a half
+ * space not past full contact) or, a periodic layer, with its substrate
+ * held at delta (the mean mode on the spring k_0: the approach moves with
+ * p / k_0, and a layer is pressed past full contact by its compression). */
 static int
 adhesive_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err)
 {
 	double t0 = rc_clock(), sum = 0, p = s->last_pressure;
 	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
-	int r;
+	int r, layer = !s->free_bc && isfinite(s->k_uniform);
 
 	if (!isfinite(delta))
 		return rc_seterr(err, "approach must be finite");
-	if (isfinite(s->k_uniform))
-		return rc_seterr(err, "adhesion with a layer: load control only "
-		    "(the layer's approach moves with the load)");
 	for (size_t i = 0; i < s->n; i++)
 		sum += s->height[i];
-	if (!s->free_bc && !(delta < s->top - sum / (double)s->n))
+	if (!s->free_bc && !layer && !(delta < s->top - sum / (double)s->n))
 		return rc_seterr(err, "approach %g reaches full contact "
 		    "(max h - <h> = %g)", delta, s->top - sum / (double)s->n);
-	if ((r = rc__fire_adh_solve(s, 1, &p, delta, res, err)) < 0)
+	if ((r = rc__fire_adh_solve(s, layer ? RC__ADH_SUBSTRATE :
+	    RC__ADH_LEVEL, &p, delta, res, err)) < 0)
 		return -1;
 	s->last_pressure = *pressure = p;
 	res->seconds = rc_clock() - t0;

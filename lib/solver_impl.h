@@ -65,8 +65,11 @@ int rc__fire_alloc(rc_solver *s, rc_err *err);
  * e's real buffer, returned. */
 double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
 /* FIRE with the adhesive law (solver_fire_adh.c): load control at p
- * (control 0) or the mean height held at max h - delta (control 1; the
- * pressure found into *p). */
+ * (RC__ADH_LOAD), the mean height held at max h - delta (RC__ADH_LEVEL;
+ * the pressure found into *p) or, a periodic layer, its rigid substrate
+ * held at approach delta (RC__ADH_SUBSTRATE: the mean mode on the spring
+ * k_0, p = k_0 (<u> - max h + delta) found into *p). */
+enum { RC__ADH_LOAD = 0, RC__ADH_LEVEL = 1, RC__ADH_SUBSTRATE = 2 };
 int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
     rc_solve_result *res, rc_err *err);
 /* What that loop runs on: the operator's grid of n points, of which
@@ -75,7 +78,9 @@ int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
  * of the tractions, which then scales the residual); else load
  * control's rule (solver_fire.c).  The loop: control 0, p on
  * every one of the n points; control 1, <u> held at target (periodic
- * only), p found.  Status as rc_solver_solve. */
+ * only), p found; control 2 (periodic only), p = spring (<u> - target)
+ * from the state, spring = k_0 > 0 of the layer (unused by the other
+ * two).  Status as rc_solver_solve. */
 typedef struct rc__adh_view {
 	rc_elastic *el;
 	size_t n;
@@ -84,6 +89,7 @@ typedef struct rc__adh_view {
 	const double *h;
 	unsigned char *contact;
 	double mass0;
+	double spring;
 } rc__adh_view;
 struct rc_adhesion;
 int rc__adh_loop(const rc__adh_view *w, const struct rc_adhesion *law,

@@ -232,11 +232,6 @@ adhesion_check(struct tool *t, const struct gfmd_opts *o)
 		tool_bad(t, "--adhesion with --hardness: not combined (the "
 		    "plastic model keeps no history, so it has no unloading "
 		    "branch, where pull-off and hysteresis happen)");
-	/* free boundaries hold the rigid level, the substrate's travel */
-	if (o->given_layer && o->napproach && o->boundary != RC_BOUNDARY_FREE)
-		tool_bad(t, "--adhesion with --thickness: load control (-p, "
-		    "--pressure-abs) only, not --approach, on periodic "
-		    "boundaries (add --boundary free)");
 }
 
 /* Long: every check between options in one place, so that all problems

@@ -86,7 +86,23 @@ check "--method cg: the message names --method fire" grep -q -- "--method fire" 
 check_status "--adhesion with --hardness" 2 gfmd-solve $ADH --method cg --hardness 1 -p 0.1 "$T/sine.surf"
 # checkpoints record the adhesion (tests/e2e/checkpoint.sh resumes one)
 check_status "--adhesion with --checkpoint: accepted" 0 gfmd-solve -q $ADH --checkpoint "$T/ck.surf" -p 0.1,0.05 "$T/sine.surf"
-check_status "--adhesion, --thickness and --approach" 2 gfmd-solve $ADH --thickness 10 --poisson 0.3 --approach 1 "$T/sine.surf"
+# a periodic layer under displacement control: the substrate held at each
+# approach (in, then out of contact); the rows' approach is the one asked
+# for, and load control at row 1's p gives its approach back
+gfmd-solve -q -j 1 $ADH --tol 1e-8 --thickness 10 --poisson 0.3 --approach 1,0.5,-0.5 \
+    "$T/sine.surf" > "$T/la.tsv" 2> "$T/la.err"
+check "--adhesion, --thickness and --approach: solved" test $? -eq 0
+r=1
+for d in 1 0.5 -0.5; do
+	check_rel "layer, approach $d: the row's approach" "$(col "$T/la.tsv" approach $r)" "$d" 1e-12
+	r=$((r + 1))
+done
+gfmd-solve -q -j 1 $ADH --tol 1e-8 --thickness 10 --poisson 0.3 \
+    --pressure-abs "$(col "$T/la.tsv" p 1)" "$T/sine.surf" > "$T/lp.tsv"
+check_rel "layer: load control at row 1's p gives approach 1" \
+    "$(col "$T/lp.tsv" approach)" 1 1e-6
+check "layer: the same contact points" test \
+    "$(col "$T/lp.tsv" n_c)" = "$(col "$T/la.tsv" n_c 1)"
 # a layer under load control is allowed
 gfmd-solve -q -j 1 $ADH --thickness 1000 --poisson 0.3 --pressure-abs 0.01 "$T/sine.surf" > "$T/l.tsv"
 check "--adhesion on a layer under load control: solved" test $? -eq 0
