@@ -36,6 +36,7 @@
  */
 #include "solver_impl.h"
 
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -101,18 +102,22 @@ adhesive_approach(rc_solver *s, double delta, double *pressure,
 
 /* The next end of the bracket from x = log p: p times or over 4, but
  * upwards never past a hardness H (see the top); NAN when p is H to
- * round-off. */
+ * round-off.  That test is on the distance to H and on progress in x:
+ * exp and log lose a few ulps each way, so for some H (0.05) p stalled
+ * a few ulps below H and the bracket ran its MAX_BRACKET solves at
+ * p = H before a vaguer message. */
 static double
 bracket_step(const rc_solver *s, double x, int up)
 {
-	double p = exp(x), H = s->opts.hardness;
+	double p = exp(x), H = s->opts.hardness, next;
 
 	if (!up)
 		return x - log(4.0);
 	if (!rc_solver_opts_plastic(&s->opts) || 4 * p < H)
 		return x + log(4.0);
 	p = H - 0.25 * (H - p);
-	return p < H ? log(p) : NAN;
+	next = log(p);
+	return H - p > 64 * DBL_EPSILON * H && next > x ? next : NAN;
 }
 
 /* Long: the full-contact check, the bracket and the Illinois steps share

@@ -89,6 +89,12 @@ check_status "p > H" 1 gfmd-solve --hardness 0.01 --pressure-abs 0.02 "$T/r.surf
 check "p > H: the message says why" grep -q "exceeds the hardness" "$T/stderr"
 check_status "--approach past the plastic limit" 1 gfmd-solve -q --hardness 0.2 --approach 10 "$T/r.surf"
 check "--approach past the plastic limit: the message says why" grep -q "not reached below the hardness" "$T/stderr"
+# H = 0.05: exp and log of the bracket once stalled a few ulps below H,
+# so the same case ran 60 solves at p = H and ended "not bracketed".
+for m in fire cg; do
+	check_status "--approach past the plastic limit, H = 0.05, $m" 1 gfmd-solve -q --method $m --hardness 0.05 --approach 1 "$T/r.surf"
+	check "--approach past the plastic limit, H = 0.05, $m: names the hardness" grep -q "not reached below the hardness" "$T/stderr"
+done
 
 # --- contact-stats: hardness is a key (two hardnesses, two groups) and
 # a_plastic a result.
