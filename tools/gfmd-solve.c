@@ -466,9 +466,14 @@ indenter_setup(struct run *r)
 	rc_err err;
 
 	o->so.boundary = run_boundary(r);
-	if (o->so.boundary == RC_BOUNDARY_PERIODIC)
+	if (o->so.boundary == RC_BOUNDARY_PERIODIC) {
 		tool_check_wrap(&r->t, h, r->input);
-	else if (o->given_kernel && o->so.kernel != RC_KERNEL_PIXEL)
+		if (o->given_kernel && o->so.kernel == RC_KERNEL_PIXEL &&
+		    o->given_layer)
+			tool_bad(&r->t, "%s (%s is periodic)",
+			    gfmd_pixel_layer_refusal, name);
+		tool_usage_check(&r->t);
+	} else if (o->given_kernel && o->so.kernel != RC_KERNEL_PIXEL)
 		tool_fail(&r->t, "--kernel %s: %s is solved with free boundaries "
 		    "(not marked periodic), which always use Love's pixel "
 		    "compliance; drop --kernel or add --boundary periodic",

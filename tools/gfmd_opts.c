@@ -217,6 +217,11 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 	}
 }
 
+const char gfmd_pixel_layer_refusal[] = "--kernel pixel: a periodic layer "
+    "(--thickness) has the continuum kernel only (the pixel kernel would "
+    "need the layer's factor on every image of its sum; free boundaries "
+    "solve a layer with its pixel compliance)";
+
 /* --adhesion with the options it combines with (gfmd-solve(1),
  * ADHESION). */
 static void
@@ -277,10 +282,11 @@ gfmd_opts_check(struct tool *t, struct gfmd_opts *o, int argc, char **argv)
 			    "with Love's pixel compliance (the discretisation of "
 			    "--kernel pixel); drop --kernel",
 			    rc_kernel_name(o->so.kernel));
-		if (o->so.kernel == RC_KERNEL_PIXEL && o->given_layer)
-			tool_bad(t, "--kernel pixel: a layer (--thickness) has the "
-			    "continuum kernel only (the pixel kernel would need "
-			    "the layer's factor on every image of its sum)");
+		/* a free layer is solved with its pixel compliance; a grid
+		 * that decides the boundary is checked in gfmd-solve.c */
+		if (o->so.kernel == RC_KERNEL_PIXEL && o->given_layer &&
+		    o->boundary == RC_BOUNDARY_PERIODIC)
+			tool_bad(t, "%s", gfmd_pixel_layer_refusal);
 	}
 	if (o->ck_every > 0 && o->ck_path == NULL)
 		tool_bad(t, "--checkpoint-every: needs --checkpoint FILE");

@@ -75,6 +75,8 @@ enum {
 enum gfmd_field { GFMD_CONTACT, GFMD_GAP, GFMD_PRESSURE, GFMD_DISPLACEMENT,
 	GFMD_NFIELDS };
 extern const char *const gfmd_field_option[GFMD_NFIELDS];
+/* Why --kernel pixel is refused with a periodic layer. */
+extern const char gfmd_pixel_layer_refusal[];
 
 struct gfmd_opts {
 	rc_solver_opts so;

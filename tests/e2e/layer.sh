@@ -68,6 +68,13 @@ check_status "--poisson 0.6" 2 gfmd-solve --thickness 0.1 --poisson 0.6 -p 0.1 "
 check_status "--substrate glued" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --substrate glued -p 0.1 "$T/r.surf"
 check_status "--thickness with --checkpoint: accepted (recorded)" 0 gfmd-solve -q --thickness 0.1 --poisson 0.3 --checkpoint "$T/ck.surf" -p 0.1 "$T/r.surf"
 check_status "--thickness --kernel pixel (periodic)" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --kernel pixel -p 0.1 "$T/r.surf"
+check_status "--thickness --kernel pixel --boundary periodic" 2 gfmd-solve --thickness 0.1 --poisson 0.3 --kernel pixel --boundary periodic -p 0.1 "$T/r.surf"
+# free boundaries solve a layer with its pixel compliance: --kernel pixel
+# names what they do anyway (the rows the same as without it)
+gfmd-solve -q -j 1 --thickness 0.1 --poisson 0.3 --boundary free -p 0.1 "$T/r.surf" > "$T/kf0.tsv"
+gfmd-solve -q -j 1 --thickness 0.1 --poisson 0.3 --boundary free --kernel pixel -p 0.1 "$T/r.surf" > "$T/kf1.tsv"
+check "--thickness --kernel pixel --boundary free: accepted" test $? -eq 0
+check "--kernel pixel on a free layer: the same rows" test "$(cut -f 1-20 "$T/kf0.tsv")" = "$(cut -f 1-20 "$T/kf1.tsv")"
 
 # --- Free boundaries (the layer's pixel compliance, lib/elastic_layer_free.h).
 # A non-periodic map is solved with free boundaries, a layer included;
