@@ -215,7 +215,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "free boundaries need a positive definite "
 		    "compliance: this layer's smallest eigenvalue is %.3g of "
 		    "its self-compliance (an incompressible bonded layer, "
-		    "Poisson 0.5, has none at q = 0: give Poisson < 0.5)",
+		    "Poisson 0.5, displaces no volume: on an area more than "
+		    "about 20 thicknesses across give Poisson < 0.5)",
 		    s->fel.eig_min / s->fel.self);
 		rc_elastic_free(&s->el);
 		rc_halfspace_release(&s->fel);

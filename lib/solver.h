@@ -135,7 +135,8 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * solve (solver_approach.c); |approach - delta| <= opts.tol * delta at
  * the end.  *pressure gets p; res sums the iterations, transform pairs
  * and time of all trials.  Periodic: delta must be below max h - <h>
- * (full contact), unless a hardness flattens the indenter.  A hardness
+ * (full contact), unless a hardness flattens the indenter or a layer
+ * with poisson < 0.5 compresses (k_0 finite).  A hardness
  * H: p stays below H, and delta must be below the approach reached as
  * p -> H (about max h - min h plus the elastic deflection; beyond it the
  * whole area flows: an error, solver_approach.c).  Returns as
@@ -145,7 +146,8 @@ int rc_solver_solve(rc_solver *s, double pressure, rc_solve_result *res,
  * solver_fire_adh_free.c), which traces unstable branches too; a periodic
  * layer with its rigid substrate held at delta instead (the mean mode on
  * the spring k_0, the load p = k_0 (<u> - max h + delta) following the
- * state; no full-contact bound), so the approach is delta to rounding. */
+ * state; no full-contact bound), so the approach is delta to rounding;
+ * poisson 0.5 (k_0 infinite) is held as the half space. */
 int rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
     rc_solve_result *res, rc_err *err);
 

@@ -136,8 +136,9 @@ rc_solver_solve_approach(rc_solver *s, double delta, double *pressure,
 		return adhesive_approach(s, delta, pressure, res, err);
 	if (!(delta > 0) || !isfinite(delta))
 		return rc_seterr(err, "approach must be positive and finite");
-	/* A hardness: the flattening takes the approach past full
-	 * contact (up to the bound of the top of this file). */
+	/* A hardness (its flattening) and a compressible layer (its
+	 * uniform compression) take the approach past full contact (a
+	 * hardness up to the bound of the top of this file). */
 	if (!s->free_bc && !isfinite(s->k_uniform) &&
 	    !rc_solver_opts_plastic(&s->opts)) {
 		double sum = 0, full;

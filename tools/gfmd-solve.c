@@ -370,6 +370,12 @@ resume_defaults(struct run *r)
 	}
 	if (!o->given_law)
 		o->so.adhesion_law = (enum rc_adhesion_law)saved->law;
+	else if (!(o->so.adhesion > 0)) {
+		tool_bad(&r->t, "--law: %s has no adhesion to give a law to "
+		    "(add --adhesion and --range, or drop --law)",
+		    o->resume_path);
+		tool_usage_check(&r->t);
+	}
 	if (!o->nreduced && !o->nabsolute) {
 		double *copy = malloc(saved->npressures * sizeof(double));
 

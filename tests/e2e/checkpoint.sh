@@ -142,6 +142,10 @@ if [ -f ck3.surf ]; then
 	check "resume with another method: named" grep -q 'checkpoint has --method fire, this run cg' err
 	gfmd-solve -q -p 0.01 --resume ck3.surf s256.surf > /dev/null 2>err
 	check "resume with another pressure list: named" grep -q 'checkpoint has 8 pressures, this run 1' err
+	check_status "resume of a non-adhesive checkpoint with --law: exit 2" 2 \
+	    gfmd-solve -q --law dugdale --resume ck3.surf s256.surf
+	check "resume of a non-adhesive checkpoint with --law: says it has no adhesion" \
+	    grep -q 'has no adhesion to give a law to' "$T_TMP/stderr"
 	surfgen -n 256 --seed 6 --lambda-s 0.02 -o other.surf
 	gfmd-solve -q --resume ck3.surf other.surf > /dev/null 2>err
 	check "resume on another indenter: named" grep -q 'another indenter' err
