@@ -20,6 +20,7 @@
 #include "atomic.h"
 #include "fft.h"
 #include "gridcheck.h"
+#include "level.h"
 #include "threads.h"
 #include "units.h"
 
@@ -699,6 +700,7 @@ tool_list_channels(const struct tool *t, const char *path)
 	o.lx = t->lx;
 	o.ly = t->ly;
 	o.have_l = t->have_l;
+	o.npy_xy = t->npy_xy;	/* nx, ny as the grid would be read */
 	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
@@ -732,26 +734,55 @@ tool_grid_to_unit(const struct tool *t, rc_grid *g, const char *path,
 		    err.msg);
 }
 
+/* The wrap ratio of g levelled by a plane (as surfwarp --detrend plane
+ * would); NAN if it cannot be computed. */
+static double
+levelled_wrap_ratio(const rc_grid *g)
+{
+	rc_err err;
+	rc_grid *c = rc_grid_clone(g, 1, &err);
+	double r = NAN;
+
+	if (c != NULL && rc_detrend(c, RC_DETREND_PLANE, NULL, &err) == 0)
+		r = rc_grid_wrap_ratio(c);
+	rc_grid_free(c);
+	return r;
+}
+
 void
-tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path)
+tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path,
+    const char *use, const char *instead)
 {
 	const char *name = rc_is_stdio(path) ? "standard input" : path;
-	double r = rc_grid_wrap_ratio(g);
+	double r = rc_grid_wrap_ratio(g), rl;
+	char level[160];
 
 	if (!(r > RC_WRAP_RATIO_WARN))
 		return;
-	if (g->periodic)
-		tool_warn(t, "%s: treated as periodic, but the step across its "
-		    "edges is %.3g times the rms step inside (warning above %g): "
-		    "a measured or tilted map? If it is not periodic, say "
-		    "--no-periodic", name, r, RC_WRAP_RATIO_WARN);
+	/* Advise levelling only where it helps: a levelled measurement's
+	 * edges still need not meet (a patch is not made periodic by any
+	 * levelling). */
+	rl = levelled_wrap_ratio(g);
+	if (rl <= RC_WRAP_RATIO_WARN)
+		snprintf(level, sizeof(level), "it is tilted: levelled "
+		    "(surfwarp --detrend plane) the ratio is %.3g", rl);
 	else
-		tool_warn(t, "%s: not periodic (a measured patch), yet %s treats it "
-		    "as one period here: the step across its edges, %.3g times the "
-		    "rms step inside (warning above %g), enters the results; level "
-		    "it (surfwarp --detrend) or leave out the option that makes it "
-		    "periodic (--periodic, --boundary periodic)", name, t->name, r,
-		    RC_WRAP_RATIO_WARN);
+		snprintf(level, sizeof(level), "levelling does not help "
+		    "(levelled by a plane, %.3g): its edges do not meet, as on "
+		    "most measurements", rl);
+	if (g->periodic)
+		tool_warn(t, "%s: read as periodic (%s), but the step across its "
+		    "edges is %.3g times the rms step inside (warning above %g); "
+		    "%s. A measurement is not periodic: %s", name,
+		    t->periodic == RC_PERIODIC_YES ? "--periodic" :
+		    "the file's flag or its format's rule", r, RC_WRAP_RATIO_WARN,
+		    level, t->periodic == RC_PERIODIC_YES ? "leave out --periodic" :
+		    "say --no-periodic");
+	else
+		tool_warn(t, "%s: a patch (not periodic), but %s as one period, "
+		    "and the step across its edges is %.3g times the rms step "
+		    "inside (warning above %g); %s. %s", name, use, r,
+		    RC_WRAP_RATIO_WARN, level, instead);
 }
 
 void

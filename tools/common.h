@@ -171,10 +171,15 @@ rc_grid *tool_read_grid(const struct tool *t, const char *path);
  * field to its indenter's); exits 1 if it cannot be. */
 void tool_grid_to_unit(const struct tool *t, rc_grid *g, const char *path,
     const char *unit);
-/* For a tool that treats g as periodic: warn on stderr, naming the
- * option, when the step across its edges is far above the steps inside
- * (rc_grid_wrap_ratio above RC_WRAP_RATIO_WARN). */
-void tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path);
+/* For a tool that treats g as periodic: one warning on stderr when the
+ * step across its edges is far above the steps inside (rc_grid_wrap_ratio
+ * above RC_WRAP_RATIO_WARN), saying what to do: on a grid read as
+ * periodic, which option or rule made it so and how to say it is not;
+ * on a patch, what takes it as one period (use, subject and verb:
+ * "--boundary periodic solves it") and what to do instead (a sentence).  Levelling is advised
+ * only if a plane fit brings the ratio below the threshold. */
+void tool_check_wrap(const struct tool *t, const rc_grid *g, const char *path,
+    const char *use, const char *instead);
 /* The same for the main input, whose channel --channel chooses. */
 rc_grid *tool_read_input(const struct tool *t, const char *path);
 /* surfstat --channels: one line per channel of the file (tab-separated

@@ -473,7 +473,9 @@ indenter_setup(struct run *r)
 
 	o->so.boundary = run_boundary(r);
 	if (o->so.boundary == RC_BOUNDARY_PERIODIC) {
-		tool_check_wrap(&r->t, h, r->input);
+		tool_check_wrap(&r->t, h, r->input, "--boundary periodic "
+		    "solves it", "Leave out --boundary periodic: a patch is "
+		    "solved with free boundaries");
 		if (o->given_kernel && o->so.kernel == RC_KERNEL_PIXEL &&
 		    o->given_layer)
 			tool_bad(&r->t, "%s (%s is periodic)",

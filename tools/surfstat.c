@@ -859,7 +859,12 @@ main(int argc, char **argv)
 	 * finite patch as one; the scalar row's spectral derivatives and
 	 * --by-height do not. */
 	if (g->periodic || so.table == T_SCALARS || so.table == T_BY_HEIGHT)
-		tool_check_wrap(&t, g, so.in);
+		tool_check_wrap(&t, g, so.in, so.method == RC_DERIV_FD ?
+		    "the spectral gbar takes it" : "the spectral derivatives "
+		    "(gbar, rms_laplacian, nayak, phi1..phi9) take it",
+		    so.method == RC_DERIV_FD ? "gbar_fd and --iso's Sdq do not" :
+		    "--fd takes the derivatives without the wrap (gbar stays "
+		    "spectral: use gbar_fd), --iso uses the patch alone");
 	if (so.mask_path != NULL) {
 		mask = tool_read_grid(&t, so.mask_path);
 		if (rc_mask_check(mask, g, &err) == 0)

@@ -144,11 +144,25 @@ check "... nor in gfmd-solve" [ ! -s warn.txt ]
 awk 'BEGIN { srand(4); for (j = 0; j < 32; j++) { for (i = 0; i < 32; i++)
 	printf "%s%.17g", (i ? " " : ""), 0.01 * i + 0.003 * j + 0.005 * (rand() - 0.5); print "" } }' >tilt.txt
 surfstat tilt.txt >/dev/null 2>warn.txt
-check "surfstat warns on a tilted map" grep -q "tilt.txt: treated as periodic.*--no-periodic" warn.txt
+check "surfstat warns on a tilted map" grep -q "tilt.txt: read as periodic (the file's flag or its format's rule).*--no-periodic" warn.txt
+check "... once" [ "$(wc -l <warn.txt)" -eq 1 ]
+check "... and advises levelling, which helps on a tilted map" grep -q "it is tilted: levelled (surfwarp --detrend plane) the ratio is" warn.txt
 gfmd-solve -q -j 1 -p 0.1 tilt.txt >/dev/null 2>warn.txt
-check "gfmd-solve warns on a tilted map" grep -q "tilt.txt: treated as periodic.*--no-periodic" warn.txt
+check "gfmd-solve warns on a tilted map" grep -q "tilt.txt: read as periodic.*--no-periodic" warn.txt
+surfstat --periodic tilt.txt >/dev/null 2>warn.txt
+check "--periodic given: the warning names it" grep -q "read as periodic (--periodic).*leave out --periodic" warn.txt
 surfstat --no-periodic tilt.txt >/dev/null 2>warn.txt
-check "--no-periodic: a patch, and the warning says it is treated as periodic" grep -q "not periodic (a measured patch)" warn.txt
+check "--no-periodic: a patch, and the warning says what takes it as a period" grep -q "a patch (not periodic), but the spectral derivatives (gbar, rms_laplacian, nayak, phi1..phi9) take it as one period" warn.txt
+check "... without naming options the user did not give" sh -c '! grep -q -e "--periodic\|--boundary" warn.txt'
+# A levelled patch whose edges do not meet (a crop of a periodic surface):
+# levelling is not advised again, the ways around the wrap are.
+surfwarp -q --crop 0:40,0:40 --detrend plane -o crop.surf rough.surf
+surfstat crop.surf >/dev/null 2>warn.txt
+check "a levelled patch: the warning says levelling does not help" grep -q "levelling does not help (levelled by a plane, [0-9.]*): its edges do not meet" warn.txt
+check "... and names --fd and --iso" grep -q -- "--fd takes the derivatives without the wrap.*--iso uses the patch alone" warn.txt
+check "... and does not advise surfwarp --detrend" sh -c '! grep -q "surfwarp --detrend" warn.txt'
+gfmd-solve -q -j 1 -p 0.1 --boundary periodic crop.surf >/dev/null 2>warn.txt
+check "gfmd-solve --boundary periodic on a patch: names the option given" grep -q "but --boundary periodic solves it as one period.*Leave out --boundary periodic" warn.txt
 surfwarp -q -w 0 --no-periodic -o tilt.surf tilt.txt
 check ".surf keeps periodic = 0" grep -aq '^periodic = 0' tilt.surf
 surfwarp -q -w 0 -o tilt.gsf tilt.surf
@@ -196,6 +210,9 @@ np.save("xyf.npy", np.asfortranarray(a.T))
 		grep -v '^#' "$f.txt" >got.txt
 		check "numpy $f.npy (nx, ny) with --npy-order xy" cmp -s want.txt got.txt
 	done
+	surfstat --channels --npy-order xy xy.npy >ch.tsv
+	check "--channels honours --npy-order xy: nx 4, ny 3" \
+	    [ "$(awk -F '\t' 'NR == 2 { print $3 " " $4 }' ch.tsv)" = "4 3" ]
 	"$PY" -c '
 import numpy as np
 a = np.ones((4, 4)); a[1, 2] = np.nan
@@ -204,7 +221,7 @@ np.save("nan.npy", a)
 	check_status "a NaN in a numpy array is a missing point" 1 surfstat -q nan.npy
 	check "... 1 of 16" grep -q "1 of 16 points are missing" "$T_TMP/stderr"
 else
-	skip 8 "no python3 with numpy: arrays numpy writes (apt-get install python3-numpy)"
+	skip 9 "no python3 with numpy: arrays numpy writes (apt-get install python3-numpy)"
 fi
 
 summary
