@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "si.h"
 #include "spectral.h"
 #include "units.h"
 
@@ -23,6 +24,51 @@ rc_fit_opts_default(rc_fit_opts *o)
 	memset(o, 0, sizeof(*o));
 	o->bins_per_decade = 10;
 	o->window = RC_WINDOW_AUTO;
+}
+
+int
+rc_fit_length_parse(const char *text, rc_fit_length *l, rc_err *err)
+{
+	char *end;
+
+	memset(l, 0, sizeof(*l));
+	l->value = strtod(text, &end);
+	if (end == text || !isfinite(l->value) || !(l->value > 0))
+		return rc_seterr(err, "'%s': want a positive length: a number in "
+		    "the map's unit, a fraction of the scan (0.05L) or a length "
+		    "with its unit (5um)", text);
+	if (*end == '\0')
+		return 0;
+	if (strcmp(end, "L") == 0) {
+		l->scan = 1;
+		return 0;
+	}
+	if (!rc_unit_is_length(end) || strlen(rc_unit_canonical(end)) >=
+	    sizeof(l->unit))
+		return rc_seterr(err, "'%s': '%s' is neither L (a fraction of the "
+		    "scan) nor a length unit (m mm um nm pm angstrom)", text, end);
+	snprintf(l->unit, sizeof(l->unit), "%s", rc_unit_canonical(end));
+	return 0;
+}
+
+int
+rc_fit_length_resolve(const rc_fit_length *l, const rc_grid *g, double *out,
+    rc_err *err)
+{
+	if (l->scan)
+		*out = l->value * fmax(g->lx, g->ly);
+	else if (l->unit[0] != '\0') {
+		if (!rc_unit_is_length(g->unit))
+			return rc_seterr(err, "%g%s: the map has no length unit; "
+			    "give the wavelength as a fraction of the scan (e.g. "
+			    "0.05L) or in the map's own lengths", l->value, l->unit);
+		*out = rc_unit_convert(l->value, l->unit, g->unit);
+	} else
+		*out = l->value;
+	if (!(*out > 0) || !isfinite(*out))
+		return rc_seterr(err, "the wavelength %g is not a positive length "
+		    "in the map's unit", *out);
+	return 0;
 }
 
 double
@@ -151,6 +197,84 @@ line_fit(const double *x, const double *y, const double *wt, size_t n,
 	gsl_vector_free(cc);
 	gsl_multifit_linear_free(w);
 	return chisq;
+}
+
+/* H and its error of a line through bins a .. b - 1; 0 if it fails. */
+static int
+segment_h(const double *x, const double *y, const double *wt, size_t a,
+    size_t b, double *h, double *h_err)
+{
+	double c[2], cov[2][2];
+
+	if (b < a + 3 || !isfinite(line_fit(x + a, y + a, wt + a, b - a, x[a],
+	    c, cov)))
+		return 0;
+	*h = c[1] / 2 - 1;
+	*h_err = sqrt(cov[1][1]) / 2;
+	return 1;
+}
+
+/* Step 4 on bins a .. b - 1: H of the whole in (0, 1) and no bend
+ * between the halves (halves only from 8 bins on).  lo, hi get the
+ * halves' H and errors (NAN if not split). */
+static int
+is_selfaffine(const double *x, const double *y, const double *wt, size_t a,
+    size_t b, double hurst, double lo[2], double hi[2])
+{
+	size_t m = (a + b) / 2;
+
+	int bend = 0;
+
+	lo[0] = lo[1] = hi[0] = hi[1] = NAN;
+	if (b - a >= 8 && segment_h(x, y, wt, a, m, &lo[0], &lo[1]) &&
+	    segment_h(x, y, wt, m, b, &hi[0], &hi[1]))
+		bend = !(fabs(lo[0] - hi[0]) < fmax(RC_FIT_BEND_TOL,
+		    3 * hypot(lo[1], hi[1])));
+	else
+		lo[0] = lo[1] = hi[0] = hi[1] = NAN;
+	return hurst > 0 && hurst < 1 && !bend;
+}
+
+/* Step 4: the verdict on the power-law bins, and the widest self-affine
+ * run of bins of at least a decade when the verdict is no. */
+static void
+diagnose(const double *x, const double *y, const double *wt, size_t n,
+    double bins_per_decade, rc_selfaffine_fit *fit)
+{
+	size_t a0 = 0, need = (size_t)ceil(bins_per_decade) + 1;
+	double lo[2], hi[2], best = 0, half = 0.5 * log(10) / bins_per_decade;
+
+	if (fit->rolloff)
+		while (a0 < n && x[a0] <= log(fit->q_r))
+			a0++;
+	fit->selfaffine = is_selfaffine(x, y, wt, a0, n, fit->H, lo, hi);
+	fit->h_lo = lo[0];
+	fit->h_lo_err = lo[1];
+	fit->h_hi = hi[0];
+	fit->h_hi_err = hi[1];
+	fit->q_mid = exp(x[(a0 + n) / 2]);
+	if (fit->selfaffine)
+		return;
+	fit->good_H = NAN;
+	for (size_t a = 0; a < n; a++)
+		for (size_t b = a + need; b <= n; b++) {
+			double h, e, l2[2], h2[2];
+			/* a suggestion needs H inside (0, 1) by 2 errors */
+			if (!(x[b - 1] - x[a] > best) ||
+			    !segment_h(x, y, wt, a, b, &h, &e) ||
+			    !(h > 2 * e && h < 1 - 2 * e) ||
+			    !is_selfaffine(x, y, wt, a, b, h, l2, h2))
+				continue;
+			best = x[b - 1] - x[a];
+			/* bounds half a bin outside the end bins, so that a
+			 * rounded bound keeps them in and their neighbours out */
+			fit->good_q_min = a == 0 ? 0 : exp(x[a] - half);
+			fit->good_q_max = b == n ? 0 : exp(x[b - 1] + half);
+			fit->good_lo = x[a];
+			fit->good_hi = x[b - 1];
+			fit->good_H = h;
+			fit->good_H_err = e;
+		}
 }
 
 /* Refine the hinge; cov 3x3 scaled by the residual variance. */
@@ -364,6 +488,7 @@ rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
 	}
 	fit->hrms = rc_fit_model_hrms(fit->c_r, fit->H, fit->q_r, fit->q_s,
 	    fit->rolloff);
+	diagnose(x, y, wt, n, o->bins_per_decade, fit);
 	rc = 0;
 out:
 	free(b);
@@ -371,6 +496,71 @@ out:
 	free(y);
 	free(wt);
 	return rc;
+}
+
+/* Which end of the range a half's H speaks of, and what to try. */
+static const char *
+half_advice(double h, int upper)
+{
+	if (!(h < 0 || h > 1))
+		return NULL;
+	if (upper)
+		return h < 0 ? "flat at short wavelengths (noise, or the "
+		    "instrument's resolution: raise --min-wavelength)" :
+		    "steep at short wavelengths (the instrument's or tip's "
+		    "transfer function: raise --min-wavelength)";
+	return h < 0 ? "flat at long wavelengths (a roll-off: the fit models "
+	    "one only below a power law of 0 < H < 1; or lower "
+	    "--max-wavelength)" : "steep at long wavelengths (form or "
+	    "waviness left after levelling: surfwarp --detrend quadratic, or "
+	    "lower --max-wavelength)";
+}
+
+int
+rc_fit_advice(const rc_selfaffine_fit *f, double L, char *buf, size_t len)
+{
+	const char *u = f->unit;
+	const char *lo = half_advice(f->h_lo, 0), *hi = half_advice(f->h_hi, 1);
+	char w[4][40];
+	size_t k;
+
+	if (f->selfaffine || len == 0)
+		return 0;
+	rc_si_length(w[0], sizeof(w[0]), 2 * M_PI / f->fit_q_max, u, 0);
+	rc_si_length(w[1], sizeof(w[1]), 2 * M_PI / f->fit_q_min, u, 0);
+	k = (size_t)snprintf(buf, len, "C(q) is not self-affine on the range "
+	    "fitted, q = %.3g to %.3g%s%s (wavelengths %s to %s): ",
+	    f->fit_q_min, f->fit_q_max, u[0] ? " 1/" : "", u, w[0], w[1]);
+	if (k < len && !(f->H > 0 && f->H < 1))
+		k += (size_t)snprintf(buf + k, len - k, "H = %.3g +- %.2g is "
+		    "outside 0 < H < 1%s", f->H, f->H_err, isfinite(f->h_lo) ?
+		    "; " : "");
+	if (k < len && isfinite(f->h_lo))
+		k += (size_t)snprintf(buf + k, len - k, "H = %.3g +- %.2g below "
+		    "q = %.3g, %.3g +- %.2g above", f->h_lo, f->h_lo_err, f->q_mid,
+		    f->h_hi, f->h_hi_err);
+	if (k < len && lo != NULL)
+		k += (size_t)snprintf(buf + k, len - k, "; %s", lo);
+	if (k < len && hi != NULL)
+		k += (size_t)snprintf(buf + k, len - k, "; %s", hi);
+	if (k < len && isfinite(f->good_H)) {
+		char mn[48] = "", mx[48] = "";
+		rc_si_length(w[2], sizeof(w[2]), 2 * M_PI / exp(f->good_hi), u, 0);
+		rc_si_length(w[3], sizeof(w[3]), 2 * M_PI / exp(f->good_lo), u, 0);
+		if (f->good_q_max > 0)
+			snprintf(mn, sizeof(mn), " --min-wavelength %.3gL",
+			    2 * M_PI / f->good_q_max / L);
+		if (f->good_q_min > 0)
+			snprintf(mx, sizeof(mx), " --max-wavelength %.3gL",
+			    2 * M_PI / f->good_q_min / L);
+		snprintf(buf + k, len - k, ". It is self-affine, H = %.3g +- %.2g, "
+		    "for wavelengths %s to %s: try%s%s", f->good_H, f->good_H_err,
+		    w[2], w[3], mn, mx);
+	} else if (k < len)
+		snprintf(buf + k, len - k, ". No part of a decade or more is "
+		    "(with 0 < H < 1 by two standard errors): the self-affine "
+		    "model does not describe this map");
+	return 1;
 }
 
 /* Field k (0-based) of a tab-separated line, into buf. */

@@ -34,6 +34,15 @@
  *    of a bin of independent modes falls as 1/modes).  Standard errors
  *    are the covariance of the fit scaled by the residual variance;
  *    hrms's by propagation through the formula above.
+ * 4. Self-affine or not: the power-law bins (above q_r with a plateau)
+ *    are split into a lower and an upper half in ln q, each fitted by a
+ *    line alone.  C(q) is called self-affine on the range if 0 < H < 1
+ *    and the halves' H differ by less than 3 standard errors (each from
+ *    its own scatter: the fit's own statistics) or by less than
+ *    RC_FIT_BEND_TOL (a bend that small is within the scatter of H
+ *    between measurements of one surface).  If it is not, the widest run
+ *    of bins spanning at least a decade that is (same tests) is found,
+ *    for rc_fit_advice.
  * Short wavelengths measured by a scanning probe are often unreliable
  * (tip convolution, noise): q_max = 2 pi / (the shortest reliable
  * wavelength) excludes them; see surfstat(1).  On a finite patch q_max
@@ -68,6 +77,14 @@ typedef struct rc_selfaffine_fit {
 	double fit_q_min, fit_q_max;	/* the bins used */
 	size_t n_bins;
 	double rms_residual;	/* of ln C, weighted by the bins' modes */
+	/* Step 4: is C(q) self-affine on the bins fitted? */
+	int selfaffine;		/* 0 < H < 1 and the halves' slopes agree */
+	double h_lo, h_lo_err, h_hi, h_hi_err;	/* the halves; NAN if < 8 bins */
+	double q_mid;		/* where the halves meet */
+	/* the widest run of bins of at least a decade that is self-affine
+	 * (good_H NAN if none): ln q of its end bins, bounds half a bin
+	 * outside them (0 where the run reaches the end of the range), H */
+	double good_lo, good_hi, good_q_min, good_q_max, good_H, good_H_err;
 	/* The length unit of every length of the fit (q in its inverse, C
 	 * in its fourth power): the grid's lateral unit, "" if it has none.
 	 * The fit reads the heights as lengths in it; the tools bring every
@@ -75,9 +92,32 @@ typedef struct rc_selfaffine_fit {
 	char unit[32];
 } rc_selfaffine_fit;
 
+/* A wavelength bound as given on the command line: a bare number is in
+ * the map's length unit; with the suffix L a fraction of the scan (L =
+ * the longer side, lx or ly: 0.05L); with a length unit (units.h: 5um,
+ * 0.2mm, 50nm) in that unit.  Parse checks the text; resolve gives the
+ * length in g's unit, failing when a unit is given for a map without one
+ * or the result is not positive and finite. */
+typedef struct rc_fit_length {
+	double value;
+	int scan;		/* value is a fraction of the scan */
+	char unit[16];		/* a length unit, or "" */
+} rc_fit_length;
+int rc_fit_length_parse(const char *text, rc_fit_length *l, rc_err *err);
+int rc_fit_length_resolve(const rc_fit_length *l, const rc_grid *g,
+    double *out, rc_err *err);
+
 void rc_fit_opts_default(rc_fit_opts *o);
 int rc_fit_selfaffine(const rc_grid *g, rc_fft *fft, const rc_fit_opts *o,
     rc_selfaffine_fit *fit, rc_err *err);
+/* Halves whose H differ by less than this are not a bend (step 4). */
+#define RC_FIT_BEND_TOL 0.1
+/* 0 if the fit is self-affine; else 1 and, in buf, which range of q is
+ * not, why (H outside 0 < H < 1, the slope bends, flat or steep at which
+ * end) and what to try: the self-affine sub-range as --min-wavelength,
+ * --max-wavelength fractions of the scan L, or that none spans a decade. */
+int rc_fit_advice(const rc_selfaffine_fit *fit, double L, char *buf,
+    size_t len);
 /* hrms of the model (formula above). */
 double rc_fit_model_hrms(double c_r, double hurst, double q_r, double q_s,
     int rolloff);

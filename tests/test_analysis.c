@@ -640,6 +640,90 @@ test_fit(void)
 	rc_grid_free(g);
 }
 
+/* C of a fit at q (the model's power law). */
+static double
+fit_c(const rc_selfaffine_fit *f, double q)
+{
+	return f->c_r * pow(q / f->q_r, -2 - 2 * f->H);
+}
+
+/* Step 4 of fit.h: self-affine surfaces pass, two slopes and a noise
+ * floor are called out, with the halves' slopes and a sub-range. */
+static void
+test_fit_verdict(void)
+{
+	rc_fit_opts o;
+	rc_selfaffine_fit f, f2;
+	rc_err err;
+	rc_grid *g, *g2;
+	char msg[1024];
+
+	rc_fit_opts_default(&o);
+	/* known H, Rayleigh amplitudes, several seeds: no false alarm */
+	for (unsigned long seed = 1; seed <= 5; seed++) {
+		g = synth(256, 0.8, 1, 0, 0, seed, 1);
+		test_int(rc_fit_selfaffine(g, NULL, &o, &f, &err), 0, "fit");
+		test_true(f.selfaffine == 1 && rc_fit_advice(&f, 1, msg,
+		    sizeof(msg)) == 0, "H = 0.8, seed %lu: self-affine (H %.3f, "
+		    "halves %.3f %.3f)", seed, f.H, f.h_lo, f.h_hi);
+		test_abs(f.H, 0.8, 3 * f.H_err, "H = 0.8 recovered, seed %lu", seed);
+		rc_grid_free(g);
+	}
+	/* a roll-off (Eq. 2 with its plateau) is the model: no alarm */
+	g = synth(256, 0.7, 0.25, 0, 1, 3, 1);
+	test_int(rc_fit_selfaffine(g, NULL, &o, &f, &err), 0, "fit");
+	test_true(f.rolloff == 1 && f.selfaffine == 1, "roll-off fitted as "
+	    "one, self-affine above it (H %.3f)", f.H);
+	rc_grid_free(g);
+
+	/* two slopes: H = 0.9 and H = 0.1, scaled to cross in the middle of
+	 * the range (in ln q) */
+	g = synth(256, 0.9, 1, 0, 0, 1, 0);
+	g2 = synth(256, 0.1, 1, 0, 0, 2, 0);
+	rc_fit_selfaffine(g, NULL, &o, &f, &err);
+	rc_fit_selfaffine(g2, NULL, &o, &f2, &err);
+	{
+		double qm = sqrt(f.fit_q_min * f.fit_q_max);
+		double a = sqrt(fit_c(&f, qm) / fit_c(&f2, qm));
+		for (size_t k = 0; k < rc_grid_size(g); k++)
+			g->z[k] += a * g2->z[k];
+	}
+	test_int(rc_fit_selfaffine(g, NULL, &o, &f, &err), 0, "fit");
+	test_true(f.selfaffine == 0 && f.h_lo > f.h_hi + 0.3, "two slopes: "
+	    "not self-affine (halves %.3f, %.3f)", f.h_lo, f.h_hi);
+	test_true(rc_fit_advice(&f, 1, msg, sizeof(msg)) == 1 &&
+	    strstr(msg, " below q = ") != NULL, "... and said: %s", msg);
+	rc_grid_free(g);
+	rc_grid_free(g2);
+
+	/* a noise floor: white noise as strong as the surface at q = 32 dq
+	 * makes C flat above it (H < 0 at short wavelengths); the advice
+	 * names that end and a range that leaves the floor out */
+	g = synth(256, 0.8, 1, 0, 0, 4, 0);
+	rc_fit_selfaffine(g, NULL, &o, &f2, &err);
+	double q_noise = 64 * M_PI;
+	{
+		gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+		double c8 = fit_c(&f2, q_noise);
+		/* white noise of variance s2 has C = s2 dx dy / (2 pi)^2 */
+		double dx = 1.0 / 256, s = sqrt(c8 * 4 * M_PI * M_PI / (dx * dx));
+		gsl_rng_set(rng, 5);
+		for (size_t k = 0; k < rc_grid_size(g); k++)
+			g->z[k] += gsl_ran_gaussian(rng, s);
+		gsl_rng_free(rng);
+	}
+	test_int(rc_fit_selfaffine(g, NULL, &o, &f, &err), 0, "fit");
+	test_true(f.selfaffine == 0 && f.h_hi < 0, "noise floor: not "
+	    "self-affine, flat above (H %.3f, upper half %.3f)", f.H, f.h_hi);
+	test_true(rc_fit_advice(&f, 1, msg, sizeof(msg)) == 1 &&
+	    strstr(msg, "flat at short wavelengths") != NULL &&
+	    isfinite(f.good_H) && f.good_q_max > 0 && f.good_q_max < 2 * q_noise,
+	    "... the advice names the flat end and a range below q = %.3g "
+	    "(%.3g): %s", 2 * q_noise, f.good_q_max, msg);
+	test_abs(f.good_H, 0.8, 0.1, "... where H = %.3f", f.good_H);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -655,5 +739,6 @@ main(void)
 	test_psd1d();
 	test_acf();
 	test_fit();
+	test_fit_verdict();
 	return test_summary();
 }

@@ -67,7 +67,7 @@ static const struct option longopts[] = {
 /* The fit of --like FILE: a fit table, else a surface fitted here. */
 static void
 load_like(struct tool *t, const char *path, rc_selfaffine_fit *f, size_t *nx, size_t *ny,
-    double *lx, double *ly)
+    double *lx, double *ly, char *advice, size_t advice_len)
 {
 	FILE *fp = fopen(path, "rb");
 	char head[4096];
@@ -88,6 +88,7 @@ load_like(struct tool *t, const char *path, rc_selfaffine_fit *f, size_t *nx, si
 		rc_fit_opts_default(&fo);
 		if (rc_fit_selfaffine(g, NULL, &fo, f, &err) != 0)
 			tool_fail(t, "--like %s: %s", path, err.msg);
+		rc_fit_advice(f, fmax(g->lx, g->ly), advice, advice_len);
 		*nx = g->nx;
 		*ny = g->ny;
 		*lx = g->lx;
@@ -103,6 +104,7 @@ struct run {
 	const char *like;		/* --like FILE, or NULL */
 	int have_n, have_l;		/* -n, -L given (they win over --like) */
 	char like_unit[32];		/* the fit's length unit: the twin's */
+	char advice[1024];		/* rc_fit_advice of a map fitted here */
 };
 
 /* --like: the parameters of the self-affine fit of the measurement
@@ -119,7 +121,8 @@ like_params(struct run *r)
 	tool_input(&r->t, "--like", r->like);	/* checked with the outputs */
 	tool_usage_check(&r->t);
 	gsl_set_error_handler_off();
-	load_like(&r->t, r->like, &f, &nx, &ny, &lx, &ly);
+	load_like(&r->t, r->like, &f, &nx, &ny, &lx, &ly, r->advice,
+	    sizeof(r->advice));
 	if (!r->have_n) {
 		p->nx = nx;
 		p->ny = ny;
@@ -141,15 +144,35 @@ like_params(struct run *r)
 	 * of the measurement). */
 	if (p->lambda_s < 2 * fmax(p->lx / (double)p->nx, p->ly / (double)p->ny))
 		p->lambda_s = 0;
-	if (!r->t.quiet)
-		tool_warn(&r->t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
-		    "lambda_s = %.4g, rms height %.4g%s%s", r->like, p->hurst,
-		    p->lambda_r, p->rolloff ? " (roll-off)" : "",
-		    rc_synth_lambda_s(p), p->rms_height,
-		    r->like_unit[0] ? "; lengths in " : "", r->like_unit);
+	if (!(f.H > 0 && f.H < 1))
+		tool_fail(&r->t, "--like %s: the fit's H = %.4g is outside 0 < H < 1, "
+		    "the self-affine surfaces surfgen makes: the map's spectrum is "
+		    "not self-affine on the range fitted; fit a narrower one "
+		    "(surfstat --fit --min-wavelength, --max-wavelength: its "
+		    "warning names a range that is, if there is one)%s%s", r->like,
+		    f.H, r->advice[0] ? ": " : "", r->advice);
 	if (rc_synth_check(p, &err) != 0)
 		tool_fail(&r->t, "--like %s: the fitted model cannot be made: %s",
 		    r->like, err.msg);
+}
+
+/* What --like took from the fit, said once the run will not be
+ * restarted (tool_fft_setup may re-execute the tool: a message before
+ * it would be written twice). */
+static void
+like_report(const struct run *r)
+{
+	const rc_synth_params *p = &r->o.p;
+
+	if (r->like == NULL || r->t.quiet)
+		return;
+	if (r->advice[0])
+		tool_warn(&r->t, "--like %s: %s", r->like, r->advice);
+	tool_warn(&r->t, "--like %s: H = %.4g, lambda_r = %.4g%s, "
+	    "lambda_s = %.4g, rms height %.4g%s%s", r->like, p->hurst,
+	    p->lambda_r, p->rolloff ? " (roll-off)" : "",
+	    rc_synth_lambda_s(p), p->rms_height,
+	    r->like_unit[0] ? "; lengths in " : "", r->like_unit);
 }
 
 /* Options into r->o, checked together; 1 after --help. */
@@ -209,6 +232,7 @@ generate(struct run *r)
 	rc_grid *g;
 
 	tool_fft_setup(t);
+	like_report(r);
 	effort = tool_fft_effort(t, p->nx, p->ny, 1);
 	seconds = rc_clock();
 	if ((g = rc_synth_planned(p, effort, &plan_seconds, &err)) == NULL)

@@ -68,8 +68,10 @@ usage(void)
 	    "                        (default hann on finite patches, none if periodic)\n"
 	    "  --acf-half            --acf gives G(r)/2 (contact.engineering's convention)\n"
 	    "  --acf-threshold S     autocorrelation level of Sal and Str (default 0.2)\n"
-	    "  --min-wavelength L    --fit ignores wavelengths below L (unreliable data)\n"
-	    "  --max-wavelength L    --fit ignores wavelengths above L\n"
+	    "  --min-wavelength L    --fit ignores wavelengths below L (unreliable data):\n"
+	    "                        in the map's unit, a fraction of the scan (0.05L)\n"
+	    "                        or with a unit (5um)\n"
+	    "  --max-wavelength L    --fit ignores wavelengths above L (the same forms)\n"
 	    "  --bins-per-decade N   logarithmic q bins for --psd, --gnuplot (default 10)\n"
 	    "  --psd2d FILE          also write the 2D spectrum as a grid (kind spectrum)\n"
 	    "  --gnuplot FILE        also write a gnuplot script plotting C(q) to PNG\n"
@@ -469,6 +471,11 @@ fit_row(const struct tool *t, const rc_grid *g, rc_fft *fft,
 
 	if (rc_fit_selfaffine(g, fft, fo, &f, &err) != 0)
 		tool_fail(t, "--fit: %s", err.msg);
+	{
+		char advice[1024];
+		if (rc_fit_advice(&f, fmax(g->lx, g->ly), advice, sizeof(advice)))
+			tool_warn(t, "--fit: %s", advice);
+	}
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0)
@@ -564,7 +571,10 @@ struct stat_opts {
 	enum rc_psd1d_dir dir1d;
 	int ntables, acf_half, have_window, have_s, list;
 	size_t nbins, nmr;
-	double bpd, acf_s, min_wl, max_wl;
+	double bpd, acf_s;
+	/* --min-wavelength, --max-wavelength as given (fit.h); value 0 if
+	 * not given */
+	rc_fit_length min_wl, max_wl;
 };
 
 /* A table option: the table, counted (one per run). */
@@ -581,6 +591,7 @@ static void
 stat_option(struct tool *t, struct stat_opts *so, int c, const char *arg,
     char **argv)
 {
+	rc_err err;
 	long v;
 
 	switch (c) {
@@ -651,14 +662,12 @@ stat_option(struct tool *t, struct stat_opts *so, int c, const char *arg,
 			tool_bad(t, "--acf-threshold %s: want 0 < S < 1", arg);
 		break;
 	case OPT_MIN_WAVELENGTH:
-		if (tool_double(t, "--min-wavelength", arg, &so->min_wl) == 0 &&
-		    !(so->min_wl > 0 && isfinite(so->min_wl)))
-			tool_bad(t, "--min-wavelength %s: must be positive", arg);
+		if (rc_fit_length_parse(arg, &so->min_wl, &err) != 0)
+			tool_bad(t, "--min-wavelength %s", err.msg);
 		break;
 	case OPT_MAX_WAVELENGTH:
-		if (tool_double(t, "--max-wavelength", arg, &so->max_wl) == 0 &&
-		    !(so->max_wl > 0 && isfinite(so->max_wl)))
-			tool_bad(t, "--max-wavelength %s: must be positive", arg);
+		if (rc_fit_length_parse(arg, &so->max_wl, &err) != 0)
+			tool_bad(t, "--max-wavelength %s", err.msg);
 		break;
 	case OPT_GNUPLOT:
 		so->gp = arg;
@@ -705,11 +714,8 @@ stat_opts_check(struct tool *t, struct stat_opts *so, int argc, char **argv)
 		tool_bad(t, "--acf-half: only with --acf");
 	if (so->have_s && table != T_ISO)
 		tool_bad(t, "--acf-threshold: only with --iso");
-	if ((so->min_wl > 0 || so->max_wl > 0) && table != T_FIT)
+	if ((so->min_wl.value > 0 || so->max_wl.value > 0) && table != T_FIT)
 		tool_bad(t, "--min-wavelength, --max-wavelength: only with --fit");
-	if (so->min_wl > 0 && so->max_wl > 0 && !(so->min_wl < so->max_wl))
-		tool_bad(t, "--min-wavelength %g, --max-wavelength %g: need min < max",
-		    so->min_wl, so->max_wl);
 	if (so->psd2d != NULL)
 		tool_check_grid_path(t, "--psd2d", so->psd2d);
 	tool_output(t, "-o", t->out ? t->out : "-", 0);
@@ -746,6 +752,43 @@ check_grid(const struct tool *t, struct stat_opts *so, const rc_grid *g)
 		    "needs them filled (surfwarp --fill)", name);
 }
 
+/* --min-wavelength, --max-wavelength in g's unit, as the fit's q range;
+ * a bound that leaves no wavelength of the map is an error naming the
+ * scan and the ways to give a bound relative to it. */
+static void
+fit_range(const struct tool *t, const struct stat_opts *so, const rc_grid *g,
+    rc_fit_opts *fo)
+{
+	double lmin = 0, lmax = 0, L = fmax(g->lx, g->ly);
+	double dx = fmax(g->lx / (double)g->nx, g->ly / (double)g->ny);
+	char u[40];
+	rc_err err;
+
+	snprintf(u, sizeof(u), "%s%s", g->unit[0] ? " " : "", g->unit);
+
+	if (so->min_wl.value > 0 &&
+	    rc_fit_length_resolve(&so->min_wl, g, &lmin, &err) != 0)
+		tool_fail(t, "--min-wavelength %s", err.msg);
+	if (so->max_wl.value > 0 &&
+	    rc_fit_length_resolve(&so->max_wl, g, &lmax, &err) != 0)
+		tool_fail(t, "--max-wavelength %s", err.msg);
+	if (lmin >= L)
+		tool_fail(t, "--min-wavelength: %g%s is not below the scan's length "
+		    "L = %g%s: no wavelength is left to fit (a bare number is in "
+		    "the map's unit; give it as a fraction of the scan, e.g. "
+		    "0.05L, or with a unit, e.g. 5um)", lmin, u, L, u);
+	if (lmax > 0 && lmax <= 2 * dx)
+		tool_fail(t, "--max-wavelength: %g%s is not above two spacings "
+		    "(%g%s): no wavelength is left to fit (a bare number is in the "
+		    "map's unit; give it as a fraction of the scan, e.g. 0.5L, or "
+		    "with a unit, e.g. 50um)", lmax, u, 2 * dx, u);
+	if (lmin > 0 && lmax > 0 && !(lmin < lmax))
+		tool_fail(t, "--min-wavelength %g%s, --max-wavelength %g%s: need "
+		    "min < max", lmin, u, lmax, u);
+	fo->q_max = lmin > 0 ? 2 * M_PI / lmin : 0;
+	fo->q_min = lmax > 0 ? 2 * M_PI / lmax : 0;
+}
+
 /* The statistics of g that the options ask for, written. */
 static void
 run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
@@ -759,8 +802,8 @@ run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
 	rc_fit_opts_default(&fo);
 	fo.window = so->window;
 	fo.bins_per_decade = so->bpd;
-	fo.q_max = so->min_wl > 0 ? 2 * M_PI / so->min_wl : 0;
-	fo.q_min = so->max_wl > 0 ? 2 * M_PI / so->max_wl : 0;
+	if (table == T_FIT)
+		fit_range(t, so, g, &fo);
 	/* One plan for every transform of the run (a handful: the scalars
 	 * take nine), made after the mask so that planning never waits on
 	 * input that turns out bad. */

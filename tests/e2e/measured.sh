@@ -133,6 +133,40 @@ check "a unitless map's fit has no unit column" [ "$(col nofit.tsv unit)" = miss
 surfgen -q --like nofit.tsv --seed 9 -o twin-none.surf
 check "... and its twin no unit" sh -c '! grep -aq "^unit = " twin-none.surf'
 
+# --- README's measured-data example on a real file -----------------------------
+# top-1.top (tests/data/top-1.README): 256^2 AFM map, 600 nm scan, read
+# through Gwyddion.  --min-wavelength 0.05L is 5% of the scan; a bare
+# 0.05 is 5 cm in the map's metres, which no wavelength of it is below.
+if command -v gwyddion >/dev/null 2>&1; then
+	surfwarp -q --detrend plane --fill -o lev.surf "$RC_TOP/tests/data/top-1.top"
+	surfstat --fit --min-wavelength 0.05L -o fit.tsv lev.surf 2>warn.txt
+	check "README: surfstat --fit --min-wavelength 0.05L on a real map" [ -s fit.tsv ]
+	check "... H inside (0, 1), no warning" sh -c "[ ! -s warn.txt ] && awk -v h=$(col fit.tsv H) 'BEGIN { exit !(h > 0 && h < 1) }'"
+	surfstat -q --fit --min-wavelength 30nm -o fit30.tsv lev.surf
+	check "--min-wavelength 30nm is 0.05L of the 600 nm scan" [ "$(col fit30.tsv H)" = "$(col fit.tsv H)" ]
+	surfgen -q --like fit.tsv -n 1024 --seed 7 -o twin.surf
+	check "README: surfgen --like takes the fit" grep -aq '^unit = m$' twin.surf
+	check_status "--min-wavelength 0.05 (metres) on a 600 nm scan: exit 1" 1 surfstat -q --fit --min-wavelength 0.05 lev.surf
+	check "... saying it is not below the scan and how to give it" grep -q "0.05 m is not below the scan's length L = 6e-07 m.*0.05L.*5um" "$T_TMP/stderr"
+	# the whole range is not one power law: the warning says where and
+	# names a range that is; that range then fits without a warning
+	surfstat --fit -o full.tsv lev.surf 2>warn.txt
+	check "full range: the warning says C(q) is not self-affine and where" grep -q "C(q) is not self-affine on the range fitted, q = .* (wavelengths 9.41 nm to 600 nm): .*below q = .*above" warn.txt
+	try=$(sed -n 's/.*try \(--min-wavelength [0-9.e+-]*L\).*/\1/p' warn.txt)
+	check "... and names a range to try ($try)" [ -n "$try" ]
+	surfstat --fit $try -o try.tsv lev.surf 2>warn.txt
+	check "... which fits without a warning" [ ! -s warn.txt ]
+else
+	skip 11 "no gwyddion: README's example on a real file (apt-get install gwyddion)"
+fi
+check_status "--min-wavelength 5um on a unitless map: exit 1" 1 surfstat -q --fit --min-wavelength 5um twin-src.surf
+check "... saying it has no length unit" grep -q "the map has no length unit; give the wavelength as a fraction of the scan" "$T_TMP/stderr"
+check_status "--min-wavelength 5x: usage error" 2 surfstat -q --fit --min-wavelength 5x twin-src.surf
+surfstat -q --fit -o fit-l.tsv twin-src.surf
+awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "H") c = i } NR == 2 { $c = 1.3 } { print }' OFS='\t' fit-l.tsv >steep.tsv
+check_status "surfgen --like a fit with H = 1.3: exit 1" 1 surfgen -q --like steep.tsv
+check "... saying why and what to do" grep -q "the fit's H = 1.3 is outside 0 < H < 1.*fit a narrower one (surfstat --fit --min-wavelength" "$T_TMP/stderr"
+
 # --- periodicity --------------------------------------------------------------
 surfgen -q -n 64 --seed 9 -o rough.surf
 surfstat rough.surf >/dev/null 2>warn.txt
