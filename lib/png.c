@@ -22,14 +22,20 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_sort.h>
+#include <gsl/gsl_statistics_double.h>
+
 #include "atomic.h"
 #include "colormap.h"
 #include "png_text.h"
+#include "si.h"
+#include "units.h"
 
 #define DEFAULT_MAX_SIZE 1024
 #define STRIP_MIN 16		/* least thickness of a line's strip */
 #define BIG_TEXT_FROM 256	/* map side from which text is drawn at scale 2 */
 #define LABEL_DIGITS 3		/* significant digits of the range labels */
+#define DEFAULT_CLIP 0.005	/* share clipped at each end of the range */
 
 static const uint8_t canvas_rgb[3] = { 255, 255, 255 };
 static const uint8_t ink_rgb[3] = { 0, 0, 0 };
@@ -43,6 +49,7 @@ rc_png_defaults(rc_png_opts *o)
 	o->overlay = NULL;
 	o->annotate = 1;
 	o->caption = NULL;
+	o->clip = DEFAULT_CLIP;
 }
 
 void
@@ -213,24 +220,47 @@ put(uint8_t *px, const uint8_t c[3])
 	px[2] = c[2];
 }
 
-/* The colour range: min and max of the finite values (of log10 of the
- * positive ones on a log scale); lo > hi if there are none. */
-static void
-value_range(const rc_grid *g, enum rc_png_style style, double *lo, double *hi)
+/* The colour range: the clip and 1 - clip quantiles of the finite values
+ * (of log10 of the positive ones on a log scale), min and max if they
+ * coincide; lo > hi if there are none.  *clipped: the share of the values
+ * outside [lo, hi]. */
+static int
+value_range(const rc_grid *g, enum rc_png_style style, double clip,
+    double *lo, double *hi, double *clipped, rc_err *err)
 {
-	size_t n = rc_grid_size(g);
+	size_t n = rc_grid_size(g), m = 0, out = 0;
+	double *v;
 
 	*lo = INFINITY;
 	*hi = -INFINITY;
+	*clipped = 0;
+	if ((v = rc_malloc((n ? n : 1) * sizeof(double), err)) == NULL)
+		return -1;
 	for (size_t k = 0; k < n; k++) {
 		double z = g->z[k];
 		if (!isfinite(z) || (style == RC_PNG_LOG && !(z > 0)))
 			continue;
-		if (style == RC_PNG_LOG)
-			z = log10(z);
-		*lo = fmin(*lo, z);
-		*hi = fmax(*hi, z);
+		v[m++] = style == RC_PNG_LOG ? log10(z) : z;
 	}
+	if (m > 0) {
+		gsl_sort(v, 1, m);
+		*lo = v[0];
+		*hi = v[m - 1];
+		if (clip > 0 && style != RC_PNG_MASK) {
+			double a = gsl_stats_quantile_from_sorted_data(v, 1, m, clip);
+			double b = gsl_stats_quantile_from_sorted_data(v, 1, m,
+			    1 - clip);
+			if (a < b) {
+				*lo = a;
+				*hi = b;
+			}
+			for (size_t k = 0; k < m; k++)
+				out += v[k] < *lo || v[k] > *hi;
+			*clipped = (double)out / (double)m;
+		}
+	}
+	free(v);
+	return 0;
 }
 
 static void
@@ -316,35 +346,47 @@ value_unit(const rc_grid *g)
 /* What the annotations say: the range labels (top, bottom, middle) and
  * the scale bar's length in pixels and its label. */
 struct labels {
-	char top[64], bottom[64], middle[8], scale[64];
+	char top[64], bottom[64], middle[32], scale[64], clipped[32];
 	int bar;		/* a colour bar is drawn */
 	size_t scale_px;	/* 0: no scale bar */
+	double lo, hi;		/* the colour range (log10 on a log scale) */
 };
 
 static void
 range_label(char *buf, size_t len, double v, const char *unit)
 {
-	snprintf(buf, len, "%.*g%s%s", LABEL_DIGITS, v, unit[0] ? " " : "", unit);
+	if (rc_unit_is_length(unit))
+		rc_si_length(buf, len, v, unit, 1);
+	else
+		snprintf(buf, len, "%.*g%s%s", LABEL_DIGITS, v, unit[0] ? " " : "",
+		    unit);
 }
 
-static void
-make_labels(const rc_grid *g, enum rc_png_style style, size_t map_w,
-    struct labels *lb)
+static int
+make_labels(const rc_grid *g, enum rc_png_style style, double clip,
+    size_t map_w, struct labels *lb, rc_err *err)
 {
-	double lo, hi;
+	double lo, hi, clipped;
 
 	memset(lb, 0, sizeof(*lb));
-	value_range(g, style, &lo, &hi);
+	if (value_range(g, style, clip, &lo, &hi, &clipped, err) != 0)
+		return -1;
+	lb->lo = lo;
+	lb->hi = hi;
 	lb->bar = style != RC_PNG_MASK && lo <= hi;
 	if (lb->bar) {
 		const char *unit = value_unit(g);
+		snprintf(lb->middle, sizeof(lb->middle), "%s%s",
+		    rc_kind_name(g->kind), style == RC_PNG_LOG ? " log" : "");
 		if (style == RC_PNG_LOG) {
 			lo = pow(10, lo);
 			hi = pow(10, hi);
-			strcpy(lb->middle, "log");
 		}
 		range_label(lb->top, sizeof(lb->top), hi, unit);
 		range_label(lb->bottom, sizeof(lb->bottom), lo, unit);
+		if (clipped > 0)
+			snprintf(lb->clipped, sizeof(lb->clipped), "%.2g%% clipped",
+			    100 * clipped);
 	}
 	/* A round length of at most a quarter of lx, along x. */
 	if (g->nx > 1 && g->lx > 0 && isfinite(g->lx)) {
@@ -353,9 +395,9 @@ make_labels(const rc_grid *g, enum rc_png_style style, size_t map_w,
 
 		len = (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p10;
 		lb->scale_px = (size_t)fmax(1, nearbyint(len / g->lx * (double)map_w));
-		snprintf(lb->scale, sizeof(lb->scale), "%g%s%s", len,
-		    g->unit[0] ? " " : "", g->unit);
+		range_label(lb->scale, sizeof(lb->scale), len, g->unit);
 	}
+	return 0;
 }
 
 static size_t
@@ -402,6 +444,11 @@ layout(const rc_png_opts *o, size_t map_w, size_t map_h,
 		right = max_sz(right, m + lb->scale_px + gap + rc_text_width(lb->scale, s));
 		y += th;
 	}
+	if (lb->clipped[0]) {
+		y += 2 * gap;
+		right = max_sz(right, m + rc_text_width(lb->clipped, s));
+		y += th;
+	}
 	if ((o->caption && o->caption[0]) || o->overlay) {
 		size_t w = o->caption ? rc_text_width(o->caption, s) : 0;
 		if (o->overlay)
@@ -420,13 +467,15 @@ rc_png_layout_of(const rc_grid *g, const rc_png_opts *o, rc_png_layout *l)
 	rc_png_opts def;
 	struct labels lb;
 	size_t w, h;
+	rc_err err;
 
 	if (o == NULL) {
 		rc_png_defaults(&def);
 		o = &def;
 	}
 	rc_png_size(g->nx, g->ny, g->lx, g->ly, o->max_size, &w, &h);
-	make_labels(g, resolve_style(g, o->style), w, &lb);
+	if (make_labels(g, resolve_style(g, o->style), o->clip, w, &lb, &err) != 0)
+		memset(&lb, 0, sizeof(lb));	/* out of memory: no labels */
 	layout(o, w, h, &lb, l);
 }
 
@@ -478,6 +527,12 @@ draw_annotations(uint8_t *img, const rc_png_layout *l, const rc_png_opts *o,
 		    (long)y, lb->scale, s, ink_rgb);
 		y += th;
 	}
+	if (lb->clipped[0]) {
+		y += 2 * gap;
+		rc_text_draw(img, l->width, l->height, (long)l->map_x, (long)y,
+		    lb->clipped, s, ink_rgb);
+		y += th;
+	}
 	if ((o->caption && o->caption[0]) || o->overlay) {
 		size_t x = l->map_x;
 		y += 2 * gap;
@@ -504,7 +559,7 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 	struct labels lb;
 	rc_png_layout l;
 	size_t width, height, npix;
-	double *val = NULL, *line = NULL, lo, hi;
+	double *val = NULL, *line = NULL;
 	uint8_t *rgb = NULL, *img = NULL;
 	int status = -1;
 
@@ -517,7 +572,8 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 		return rc_seterr(err, "overlay mask is %zux%zu, the map %zux%zu",
 		    o->overlay->nx, o->overlay->ny, g->nx, g->ny);
 	rc_png_size(g->nx, g->ny, g->lx, g->ly, o->max_size, &width, &height);
-	make_labels(g, style, width, &lb);
+	if (make_labels(g, style, o->clip, width, &lb, err) != 0)
+		return -1;
 	layout(o, width, height, &lb, &l);
 	if (l.width > PNG_UINT_31_MAX || l.height > PNG_UINT_31_MAX)
 		return rc_seterr(err, "PNG of %zux%zu pixels is too large", l.width,
@@ -534,8 +590,7 @@ rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
 	    (rgb = rc_malloc(npix * 3, err)) == NULL)
 		goto done;
 	resample(g->z, g->nx, &ax, width, &ay, height, line, val);
-	value_range(g, style, &lo, &hi);
-	colour(style, lo, hi, val, npix, rgb);
+	colour(style, lb.lo, lb.hi, val, npix, rgb);
 	if (o->overlay != NULL) {
 		resample(o->overlay->z, g->nx, &ax, width, &ay, height, line, val);
 		draw_overlay(val, npix, rgb);

@@ -7,13 +7,21 @@
  * unless the grid exceeds max_size, in which case it is block-averaged
  * down; the aspect ratio follows lx:ly.  Written atomically.
  *
+ * Colour range: the clip and 1 - clip quantiles of the finite values (of
+ * log10 of the positive ones on a log scale; gsl_stats_quantile_from_
+ * sorted_data), values beyond drawn in the end colours; min to max if the
+ * quantiles coincide.
+ *
  * Annotated (the default): the map on a white canvas with, at its right, a
- * colour bar from the smallest value (bottom) to the largest (top) labelled
- * with both (3 significant digits, the value unit if known; "log" at its
- * middle on a log scale; no bar for a mask), below it a scale bar of a round
- * length (1, 2 or 5 times a power of ten, at most a quarter of lx) labelled
- * with that length and the lateral unit, and below that an optional
- * caption, with a swatch labelled "contact" when an overlay is drawn.
+ * colour bar from the bottom of the range to its top labelled with both (3
+ * significant digits; lengths with an SI prefix, si.h, the micro sign
+ * drawn as such) and, at its middle, the quantity (the grid's kind:
+ * height, gap, pressure ...; "log" after it on a log scale; no bar for a
+ * mask); below it a scale bar of a round length (1, 2 or 5 times a power
+ * of ten, at most a quarter of lx) labelled with that length; then, when
+ * values were clipped, "N% clipped" (their share of the finite values);
+ * and below that an optional caption, with a swatch labelled "contact"
+ * when an overlay is drawn.
  * Text is drawn with the font of png_text.h, twice as large for maps
  * whose longer side is 256 pixels or more.
  */
@@ -35,6 +43,10 @@ typedef struct rc_png_opts {
 	const rc_grid *overlay;		/* mask drawn over the map, or NULL */
 	int annotate;			/* colour bar, range, scale bar, caption */
 	const char *caption;		/* text under the scale bar, or NULL */
+	/* Share of the values left out at each end of the colour range
+	 * (default 0.005: the 0.5th to 99.5th percentile), so that one
+	 * spike does not take the whole colormap; 0: min to max. */
+	double clip;
 } rc_png_opts;
 
 /* Where rc_png_write puts things (pixels; bar_w = 0: no colour bar). */

@@ -34,6 +34,9 @@ static const struct glyph font[] = {
 	{ ')', { 0x08, 0x04, 0x02, 0x02, 0x02, 0x04, 0x08 } },
 	{ '/', { 0x00, 0x01, 0x02, 0x04, 0x08, 0x10, 0x00 } },
 	{ ':', { 0x00, 0x0C, 0x0C, 0x00, 0x0C, 0x0C, 0x00 } },
+	{ '%', { 0x18, 0x19, 0x02, 0x04, 0x08, 0x13, 0x03 } },
+	{ '^', { 0x04, 0x0A, 0x11, 0x00, 0x00, 0x00, 0x00 } },
+	{ '\xb5', { 0x00, 0x00, 0x11, 0x11, 0x13, 0x1D, 0x10 } },	/* micro */
 	{ 'a', { 0x00, 0x00, 0x0E, 0x01, 0x0F, 0x11, 0x0F } },
 	{ 'b', { 0x10, 0x10, 0x16, 0x19, 0x11, 0x11, 0x1E } },
 	{ 'c', { 0x00, 0x00, 0x0E, 0x10, 0x10, 0x11, 0x0E } },
@@ -75,11 +78,30 @@ rc_font_glyph(char c)
 	return unknown;
 }
 
+/* The glyph's character at *s, which moves past it: the micro sign's
+ * UTF-8 (C2 B5) is one character, Latin-1's B5. */
+static char
+next_char(const char **s)
+{
+	char c = **s;
+
+	if ((unsigned char)c == 0xC2 && (unsigned char)(*s)[1] == 0xB5) {
+		*s += 2;
+		return '\xb5';
+	}
+	(*s)++;
+	return c;
+}
+
 size_t
 rc_text_width(const char *s, int scale)
 {
-	size_t n = strlen(s);
+	size_t n = 0;
 
+	while (*s) {
+		next_char(&s);
+		n++;
+	}
 	return n ? (n * RC_FONT_ADVANCE - 1) * (size_t)scale : 0;
 }
 
@@ -87,8 +109,8 @@ void
 rc_text_draw(uint8_t *rgb, size_t width, size_t height, long x, long y,
     const char *s, int scale, const uint8_t colour[3])
 {
-	for (; *s; s++, x += RC_FONT_ADVANCE * scale) {
-		const uint8_t *g = rc_font_glyph(*s);
+	for (; *s; x += RC_FONT_ADVANCE * scale) {
+		const uint8_t *g = rc_font_glyph(next_char(&s));
 		for (long r = 0; r < RC_FONT_H * scale; r++) {
 			long py = y + r;
 			if (py < 0 || py >= (long)height)

@@ -16,6 +16,7 @@
 #include "grid.h"
 #include "png.h"
 #include "png_text.h"
+#include "si.h"
 #include "testlib.h"
 
 struct image {
@@ -67,6 +68,7 @@ write_png(const rc_grid *g, const char *path, enum rc_png_style style,
 	o.max_size = max_size;
 	o.overlay = overlay;
 	o.annotate = 0;		/* the map alone: its pixels are what is tested */
+	o.clip = 0;		/* min to max: the exact mapping is tested */
 	if (rc_png_write(g, path, &o, &err) != 0) {
 		fprintf(stderr, "rc_png_write: %s\n", err.msg);
 		return -1;
@@ -379,6 +381,7 @@ test_annotated(void)
 		rc_colormap_rgb8(k / 255.0, table[k]);
 	rc_png_defaults(&o);
 	test_true(o.annotate == 1, "annotated by default");
+	o.clip = 0;	/* the labels are min and max (percentiles: below) */
 	test_true(rc_png_write(g, path, &o, &err) == 0, "write annotated PNG");
 	write_png(g, bpath, RC_PNG_AUTO, 0, NULL);
 	test_true(decode(path, &im) == 0 && decode(bpath, &bare) == 0, "both decode");
@@ -442,8 +445,9 @@ test_annotated(void)
 	free(im.rgb);
 	free(bare.rgb);
 
-	/* A mask has no colour bar; a log map says "log" on its bar. */
+	/* A mask has no colour bar; a log map says "pressure log" on its bar. */
 	rc_png_defaults(&o);
+	o.clip = 0;
 	rc_png_layout_of(mask, &o, &l);
 	test_true(l.bar_w == 0, "mask: no colour bar");
 	g->kind = RC_KIND_PRESSURE;
@@ -456,8 +460,8 @@ test_annotated(void)
 	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y, "2.05e+03", 1) &&
 	    has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + l.bar_h - th, "0.001", 1),
 	    "log map: the real values at the ends");
-	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + (l.bar_h - th) / 2, "log", 1),
-	    "log map: 'log' at the middle of the bar");
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + (l.bar_h - th) / 2,
+	    "pressure log", 1), "log map: 'pressure log' at the middle of the bar");
 	free(im.rgb);
 	/* Big maps get text at scale 2. */
 	rc_grid *big = rc_grid_new(300, 300, 1, 1, &err);
@@ -465,6 +469,118 @@ test_annotated(void)
 	test_int(l.scale, 2, "map of 300 px: font scale 2");
 	rc_grid_free(big);
 	rc_grid_free(mask);
+	rc_grid_free(g);
+}
+
+/* Lengths with SI prefixes, exact strings. */
+static void
+test_si(void)
+{
+	static const struct { double v; const char *unit; int micro; const char *want; } c[] = {
+		{ 1.999e-4, "m", 0, "200 um" },
+		{ 5.99e-8, "m", 0, "59.9 nm" },
+		{ 0.5, "um", 0, "500 nm" },
+		{ 20, "um", 1, "20 \xc2\xb5m" },
+		{ 2e-3, "m", 0, "2 mm" },
+		{ 1.5, "m", 0, "1.5 m" },
+		{ 999.7, "um", 0, "1 mm" },
+		{ 2.5e-13, "m", 0, "0.25 pm" },
+		{ -3e-6, "m", 0, "-3 um" },
+		{ 5, "angstrom", 0, "500 pm" },
+		{ 0, "nm", 0, "0 nm" },
+		{ 0.25, "", 0, "0.25" },
+		{ 3, "V", 0, "3 V" },
+	};
+	char buf[64];
+
+	for (size_t k = 0; k < sizeof(c) / sizeof(c[0]); k++) {
+		rc_si_length(buf, sizeof(buf), c[k].v, c[k].unit, c[k].micro);
+		test_true(strcmp(buf, c[k].want) == 0, "si: %g %s -> '%s' (want '%s')",
+		    c[k].v, c[k].unit, buf, c[k].want);
+	}
+	test_int((long long)rc_text_width("20 \xc2\xb5m", 1), 5 * 6 - 1,
+	    "the micro sign's two bytes are one character");
+	test_true(memcmp(rc_font_glyph('\xb5'), rc_font_glyph('u'), RC_FONT_H) != 0 &&
+	    memcmp(rc_font_glyph('\xb5'), rc_font_glyph('?'), RC_FONT_H) != 0,
+	    "the font has a micro sign (not u, not the empty box)");
+}
+
+/* The number of distinct colours of an image. */
+static size_t
+colours(const struct image *im)
+{
+	size_t n = 0, npix = im->width * im->height;
+	uint8_t (*seen)[3] = malloc(npix * 3);
+
+	for (size_t p = 0; p < npix; p++) {
+		size_t k = 0;
+		while (k < n && !same(im->rgb + 3 * p, seen[k]))
+			k++;
+		if (k == n)
+			memcpy(seen[n++], im->rgb + 3 * p, 3);
+	}
+	free(seen);
+	return n;
+}
+
+/* One spike does not take the colormap: the 0.5-99.5% range colours the
+ * rest; the legend says how much was clipped, names the quantity, and
+ * writes lengths with SI prefixes. */
+static void
+test_robust_range(void)
+{
+	rc_err err;
+	rc_grid *g = rc_grid_new(64, 64, 8e-5, 8e-5, &err);
+	struct image im;
+	rc_png_opts o;
+	rc_png_layout l;
+	const char *path = test_path("spike.png");
+	size_t n = 64 * 64, same_as_spike = 0, th = RC_FONT_H * 1, y;
+
+	/* distinct values k * 1e-9 m: a 4 um ramp, and a 1 mm spike */
+	for (size_t k = 0; k < n; k++)
+		g->z[k] = (double)((k * 37) % n) * 1e-9;
+	g->z[0] = 1e-3;
+	strcpy(g->unit, "m");
+	rc_png_defaults(&o);
+	o.annotate = 0;
+	test_true(rc_png_write(g, path, &o, &err) == 0, "write spiky map");
+	decode(path, &im);
+	for (size_t v = 0; v < 64; v++)
+		for (size_t u = 0; u < 64; u++)
+			same_as_spike += same(pixel(&im, u, v), pixel(&im, 0, 0));
+	test_true(same_as_spike < n / 50, "percentile range: %zu of %zu pixels "
+	    "share the spike's colour", same_as_spike, n);
+	test_true(colours(&im) > 200, "... and the rest spans the colormap "
+	    "(%zu colours)", colours(&im));
+	free(im.rgb);
+	o.clip = 0;
+	rc_png_write(g, path, &o, &err);
+	decode(path, &im);
+	test_true(colours(&im) <= 3, "(min to max: %zu colours, the failure "
+	    "the range avoids)", colours(&im));
+	free(im.rgb);
+
+	/* the legend: 4096 distinct values, quantiles at ranks 20.475 and
+	 * 4074.525 (GSL interpolates): 21 below, 21 above, 42/4096 = 1.03%
+	 * ("1%" at 2 digits); the quantity; SI lengths */
+	rc_png_defaults(&o);
+	rc_png_write(g, path, &o, &err);
+	decode(path, &im);
+	rc_png_layout_of(g, &o, &l);
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y + (l.bar_h - th) / 2,
+	    "height", 1), "the quantity at the middle of the bar");
+	/* top: quantile 0.995 of 0 .. 4095 nm (the spike replaced 0):
+	 * v[4074] + 0.525 = 4075.525 nm -> "4.08 um" */
+	test_true(has_text(&im, l.bar_x + l.bar_w + 4, l.bar_y, "4.08 \xc2\xb5m", 1),
+	    "top of the range in um with the micro sign");
+	/* scale bar: a quarter of 80 um is 20 um */
+	y = (l.map_y + 64 > l.bar_y + l.bar_h ? l.map_y + 64 : l.bar_y + l.bar_h) + 8;
+	test_true(has_text(&im, l.map_x + 16 + 4, y, "20 \xc2\xb5m", 1),
+	    "scale bar labelled 20 um");
+	test_true(has_text(&im, l.map_x, y + th + 8, "1% clipped", 1),
+	    "the clipped share under the scale bar");
+	free(im.rgb);
 	rc_grid_free(g);
 }
 
@@ -479,5 +595,7 @@ main(void)
 	test_mask_downsampling();
 	test_log();
 	test_failures();
+	test_si();
+	test_robust_range();
 	return test_summary();
 }
