@@ -212,6 +212,13 @@ encode(const uint8_t *rgb, size_t width, size_t height, const char *path,
 	return rc_atomic_commit(&out, err);
 }
 
+int
+rc_png_encode(const uint8_t *rgb, size_t width, size_t height, const char *path,
+    rc_err *err)
+{
+	return encode(rgb, width, height, path, err);
+}
+
 static void
 put(uint8_t *px, const uint8_t c[3])
 {

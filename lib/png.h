@@ -28,6 +28,7 @@
 #ifndef RC_PNG_H
 #define RC_PNG_H
 
+#include <stdint.h>
 #include "grid.h"
 
 enum rc_png_style {
@@ -67,5 +68,8 @@ void rc_png_size(size_t nx, size_t ny, double lx, double ly, size_t max_size,
 void rc_png_layout_of(const rc_grid *g, const rc_png_opts *o, rc_png_layout *l);
 int rc_png_write(const rc_grid *g, const char *path, const rc_png_opts *o,
     rc_err *err);
+/* An 8-bit RGB image (rows top first) written as PNG, atomically. */
+int rc_png_encode(const uint8_t *rgb, size_t width, size_t height,
+    const char *path, rc_err *err);
 
 #endif

@@ -4,7 +4,7 @@
  * Glyphs are 5 pixels wide and 7 tall, drawn at an integer scale (each
  * font pixel a scale x scale block), one blank column between characters.
  * The set is what the previews write: digits, lower-case letters (upper
- * case is drawn as lower case), space and . - + = * _ ( ) / : , % ^ and
+ * case is drawn as lower case but for C, D, H and L), space and . - + = * _ ( ) / : , % ^ and
  * the micro sign (UTF-8 C2 B5, one character); any other byte is drawn
  * as an empty box.
  */

@@ -15,6 +15,7 @@
 #include "colormap.h"
 #include "grid.h"
 #include "png.h"
+#include "png_plot.h"
 #include "png_text.h"
 #include "si.h"
 #include "testlib.h"
@@ -584,6 +585,111 @@ test_robust_range(void)
 	rc_grid_free(g);
 }
 
+/* The spectrum plot: a known power law C = 1e-20 q^-3 on q = 10 .. 1000
+ * (21 points, 0.1 decade apart) spans exactly the decades 1..3 and
+ * -29..-23, so its first point is the frame's top-left corner and its
+ * last the bottom-right; the markers found in the image lie on a line
+ * of slope -3 decades per decade in pixels; the fit is drawn red. */
+static void
+test_spectrum_plot(void)
+{
+	double q[21], c[21], sx = 0, sy = 0, sxx = 0, sxy = 0, worst = 0;
+	double cx[21], cy[21], ppd_x, ppd_y, slope, icpt;
+	rc_spectrum_plot p;
+	rc_plot_frame f;
+	rc_err err;
+	struct image im = { 0 };
+	uint8_t point[3], red[3] = { 214, 39, 40 };
+	size_t found = 0, n = 21;
+	const char *path = test_path("psd.png");
+
+	for (size_t k = 0; k < n; k++) {
+		q[k] = pow(10, 1 + 0.1 * (double)k);
+		c[k] = 1e-20 * pow(q[k], -3);
+	}
+	memset(&p, 0, sizeof(p));
+	p.q = q;
+	p.c = c;
+	p.n = n;
+	p.unit = "um";
+	p.c_power = 4;
+	p.c_name = "C(q)";
+	p.title = "test";
+	test_true(rc_png_spectrum(&p, path, &f, &err) == 0, "spectrum PNG written");
+	test_true(decode(path, &im) == 0 && im.width == 800 && im.height == 600,
+	    "an 800x600 plot (%zux%zu)", im.width, im.height);
+	test_true(f.lq_min == 1 && f.lq_max == 3 && f.lc_min == -29 &&
+	    f.lc_max == -23, "axes: the decades of the data");
+	/* the markers: squares of the colormap's first colour, found by
+	 * scanning the image column by column (they are 35 px apart) */
+	rc_colormap_rgb8(0, point);
+	for (size_t u = 0; u < im.width && found < n; u++) {
+		size_t cnt = 0;
+		double ysum = 0;
+		for (size_t v = 0; v < im.height; v++)
+			if (same(pixel(&im, u, v), point)) {
+				cnt++;
+				ysum += (double)v;
+			}
+		if (cnt == 0)
+			continue;
+		/* a marker is 5 columns wide: take its middle column */
+		cx[found] = (double)u + 2;
+		cy[found] = ysum / (double)cnt;
+		found++;
+		u += 4;
+	}
+	test_int((long long)found, 21, "21 markers found");
+	test_true(fabs(cx[0] - (double)f.x0) <= 1 && fabs(cy[0] - (double)f.y0) <= 1,
+	    "q = 10, C = 1e-23: the frame's top-left corner (%.1f, %.1f; frame "
+	    "at %zu, %zu)", cx[0], cy[0], f.x0, f.y0);
+	test_true(fabs(cx[20] - (double)(f.x0 + f.w - 1)) <= 1 &&
+	    fabs(cy[20] - (double)(f.y0 + f.h - 1)) <= 1,
+	    "q = 1000, C = 1e-29: the bottom-right corner");
+	for (size_t k = 0; k < found; k++) {
+		sx += cx[k];
+		sy += cy[k];
+		sxx += cx[k] * cx[k];
+		sxy += cx[k] * cy[k];
+	}
+	slope = (found * sxy - sx * sy) / (found * sxx - sx * sx);
+	icpt = (sy - slope * sx) / (double)found;
+	for (size_t k = 0; k < found; k++)
+		worst = fmax(worst, fabs(cy[k] - (icpt + slope * cx[k])));
+	ppd_x = (double)(f.w - 1) / 2;
+	ppd_y = (double)(f.h - 1) / 6;
+	test_rel(slope, 3 * ppd_y / ppd_x, 0.01, "markers on a line of slope -3 "
+	    "decades per decade (pixels, y down)");
+	test_true(worst <= 1, "... within 1 pixel (%.2f)", worst);
+	free(im.rgb);
+
+	/* with the fit C_r (q/q_r)^(-2-2H), H = 0.5, q_r = 10: red on the
+	 * line between markers */
+	p.have_fit = 1;
+	p.c_r = 1e-23;
+	p.hurst = 0.5;
+	p.q_r = 10;
+	p.fit_q_min = 10;
+	p.fit_q_max = 1000;
+	rc_png_spectrum(&p, path, &f, &err);
+	decode(path, &im);
+	{
+		double qm = pow(10, 1.55);
+		long x = lrint(rc_png_plot_x(&f, qm)), y = lrint(rc_png_plot_y(&f,
+		    1e-20 * pow(qm, -3)));
+		int hit = 0;
+		for (long dy = -1; dy <= 1; dy++)
+			hit |= same(pixel(&im, (size_t)x, (size_t)(y + dy)), red);
+		test_true(hit, "the fit line runs through the power law");
+		test_true(!same(pixel(&im, (size_t)x, (size_t)(y - 30)), red),
+		    "... and not 30 px above it");
+	}
+	free(im.rgb);
+	p.n = 0;
+	test_true(rc_png_spectrum(&p, path, &f, &err) != 0, "no points: an "
+	    "error (%s)", err.msg);
+}
+
 int
 main(void)
 {
@@ -597,5 +703,6 @@ main(void)
 	test_failures();
 	test_si();
 	test_robust_range();
+	test_spectrum_plot();
 	return test_summary();
 }

@@ -20,6 +20,8 @@
 #include "fit.h"
 #include "iso25178.h"
 #include "png.h"
+#include "png_plot.h"
+#include "si.h"
 #include "psd.h"
 #include "spectral.h"
 #include "stats.h"
@@ -77,7 +79,8 @@ usage(void)
 	    "  --gnuplot FILE        also write a gnuplot script plotting C(q) to PNG\n"
 	    "  --mask FILE           average over the points where the mask is 1\n"
 	    "  --fd                  finite-difference derivatives (default spectral)\n"
-	    "  --png FILE            PNG preview of the surface\n"
+	    "  --png FILE            PNG preview of the surface; with --psd, --psd1d\n"
+	    "                        or --fit the spectrum, log-log (and the fit)\n"
 	    "  --fft-effort E        estimate, measure or patient FFT planning (default:\n"
 	    "                        estimate, or measure for big grids with --wisdom)\n"
 	    "  --wisdom FILE         load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
@@ -279,6 +282,56 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	rc_row_free(&r);
 }
 
+/* --png with a spectrum table: the spectrum drawn log-log (png_plot.h),
+ * with the fit when there is one. */
+static void
+spectrum_png(const struct tool *t, const rc_grid *g, const double *q,
+    const double *c, size_t n, size_t stride, int profile,
+    const rc_selfaffine_fit *fit)
+{
+	rc_spectrum_plot p;
+	char title[160], lx[40], ly[40];
+	rc_err err;
+
+	rc_si_length(lx, sizeof(lx), g->lx, g->unit, 1);
+	rc_si_length(ly, sizeof(ly), g->ly, g->unit, 1);
+	if (profile)
+		snprintf(title, sizeof(title), "1D spectrum, %zu points, L = %s",
+		    g->nx * g->ny, g->ny == 1 ? lx : ly);
+	else
+		snprintf(title, sizeof(title), "radial spectrum, %zux%zu, L = %s x %s",
+		    g->nx, g->ny, lx, ly);
+	memset(&p, 0, sizeof(p));
+	p.q = q;
+	p.c = c;
+	p.n = n;
+	p.stride = stride;
+	p.unit = g->unit;
+	p.c_power = profile ? 3 : 4;
+	p.c_name = profile ? "C1D(q)" : "C(q)";
+	p.title = title;
+	if (fit != NULL) {
+		p.have_fit = 1;
+		p.c_r = fit->c_r;
+		p.hurst = fit->H;
+		p.q_r = fit->q_r;
+		p.rolloff = fit->rolloff;
+		p.fit_q_min = fit->fit_q_min;
+		p.fit_q_max = fit->fit_q_max;
+	}
+	if (rc_png_spectrum(&p, t->png, NULL, &err) != 0)
+		tool_fail_at(t, t->png, err.msg);
+}
+
+/* The bins drawn (spectrum_png). */
+static void
+bins_png(const struct tool *t, const rc_grid *g, const rc_psd_bin *b,
+    size_t nb, const rc_selfaffine_fit *fit)
+{
+	spectrum_png(t, g, nb ? &b[0].q : NULL, nb ? &b[0].c : NULL, nb,
+	    sizeof(*b), 0, fit);
+}
+
 static void
 psd_table(const struct tool *t, const rc_psd_bin *b, size_t nb)
 {
@@ -378,6 +431,9 @@ psd1d_table(const struct tool *t, const rc_grid *g, enum rc_psd1d_dir dir,
 
 	if (rc_psd1d(g, dir, window, &p, &np, &err) != 0)
 		tool_fail(t, "%s", err.msg);
+	if (t->png != NULL)
+		spectrum_png(t, g, np ? &p[0].q : NULL, np ? &p[0].c : NULL, np,
+		    sizeof(*p), 1, NULL);
 	rc_row_init(&r);
 	out_open(t, &o);
 	for (size_t k = 0; k < np; k++) {
@@ -476,6 +532,16 @@ fit_row(const struct tool *t, const rc_grid *g, rc_fft *fft,
 		if (rc_fit_advice(&f, fmax(g->lx, g->ly), advice, sizeof(advice)))
 			tool_warn(t, "--fit: %s", advice);
 	}
+	if (t->png != NULL) {
+		/* the spectrum the fit saw: its bins and window */
+		rc_psd_bin *b;
+		size_t nb;
+		if (rc_psd_radial_window(g, fft, fo->bins_per_decade, fo->window,
+		    &b, &nb, &err) != 0)
+			tool_fail(t, "%s", err.msg);
+		bins_png(t, g, b, nb, &f);
+		free(b);
+	}
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0)
@@ -551,10 +617,11 @@ gnuplot_script(const struct tool *t, const char *path, const rc_grid *g,
 	    "set logscale xy\n"
 	    "set format y '10^{%%L}'\n"
 	    "set xlabel 'q (1/%s)'\n"
-	    "set ylabel 'C(q)'\n"
-	    "set title 'radially averaged spectrum, %zux%zu, L = %gx%g'\n"
+	    "set ylabel 'C(q) (%s^4)'\n"
+	    "set title 'radially averaged spectrum, %zux%zu, L = %gx%g %s'\n"
 	    "plot $psd using 1:2:4 with yerrorbars pt 7 ps 0.5 title 'C(q)'\n",
-	    png, g->unit[0] ? g->unit : "length", g->nx, g->ny, g->lx, g->ly);
+	    png, g->unit[0] ? g->unit : "length", g->unit[0] ? g->unit : "length",
+	    g->nx, g->ny, g->lx, g->ly, g->unit[0] ? g->unit : "(no unit)");
 	free(png);
 	if (ferror(a.fp) || rc_atomic_commit(&a, &err) != 0) {
 		rc_atomic_abort(&a);
@@ -837,6 +904,8 @@ run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
 			gnuplot_script(t, so->gp, g, b, nb);
 		if (table == T_PSD)
 			psd_table(t, b, nb);
+		if (table == T_PSD && t->png != NULL)
+			bins_png(t, g, b, nb, NULL);
 		free(b);
 	}
 	switch (table) {
@@ -913,7 +982,9 @@ main(int argc, char **argv)
 		if (rc_mask_check(mask, g, &err) == 0)
 			tool_fail_at(&t, so.mask_path, err.msg);
 	}
-	if (t.png != NULL && rc_png_write(g, t.png, NULL, &err) != 0)
+	/* with a spectrum table, --png draws the spectrum (run_stats) */
+	if (t.png != NULL && so.table != T_PSD && so.table != T_PSD1D &&
+	    so.table != T_FIT && rc_png_write(g, t.png, NULL, &err) != 0)
 		tool_fail_at(&t, t.png, err.msg);
 	run_stats(&t, &so, g, mask);
 	rc_grid_free(mask);

@@ -43,6 +43,21 @@ if command -v gnuplot >/dev/null 2>&1; then
 else
 	skip 2 "gnuplot not installed: the --gnuplot script is not run"
 fi
+# The gnuplot spectrum names the units: C(q) in unit^4, L in the unit.
+surfwarp -q --unit um -o r-um.surf r.surf
+surfstat --psd --gnuplot cu.gp r-um.surf > /dev/null
+check "gnuplot: C(q) axis carries its unit" grep -q "set ylabel 'C(q) (um^4)'" cu.gp
+check "gnuplot: the title its lengths' unit" grep -q "set title '.*L = 1x1 um'" cu.gp
+# --png with a spectrum table draws the spectrum (an 800x600 plot), not
+# the map (r.surf is 64 wide: its preview is narrower).
+pngw() { od -An -tu1 -j 16 -N 4 "$1" | awk '{ print $1 * 16777216 + $2 * 65536 + $3 * 256 + $4 }'; }
+surfstat --psd --png psd.png r.surf > /dev/null
+check "surfstat --psd --png: the spectrum plot, 800 wide" [ "$(pngw psd.png)" = 800 ]
+surfgen -q -n 64 --seed 5 -o wide.surf
+surfstat --fit --png fitp.png wide.surf > /dev/null
+check "surfstat --fit --png: the spectrum plot" [ "$(pngw fitp.png)" = 800 ]
+surfstat --png map.png r.surf > /dev/null
+check "surfstat --png alone: the map" [ "$(pngw map.png)" != 800 ]
 surfstat --acf r.surf > acf.tsv
 check "acf has x, y, radial" [ "$(cut -f1 acf.tsv | sort -u | tr '\n' ' ')" = "direction radial x y " ]
 surfstat --by-height 7 r.surf > bh.tsv
