@@ -22,7 +22,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 
 #include "atomic.h"
@@ -227,6 +226,17 @@ put(uint8_t *px, const uint8_t c[3])
 	px[2] = c[2];
 }
 
+/* qsort's order of doubles (glibc's merge sort: 0.85 s of CPU for
+ * 2048^2 random doubles against gsl_sort's heap sort, 1.57 s; measured
+ * under load, -O2). */
+static int
+cmp_double(const void *a, const void *b)
+{
+	double x = *(const double *)a, y = *(const double *)b;
+
+	return (x > y) - (x < y);
+}
+
 /* The colour range: the clip and 1 - clip quantiles of the finite values
  * (of log10 of the positive ones on a log scale), min and max if they
  * coincide; lo > hi if there are none.  *clipped: the share of the values
@@ -250,7 +260,7 @@ value_range(const rc_grid *g, enum rc_png_style style, double clip,
 		v[m++] = style == RC_PNG_LOG ? log10(z) : z;
 	}
 	if (m > 0) {
-		gsl_sort(v, 1, m);
+		qsort(v, m, sizeof(double), cmp_double);
 		*lo = v[0];
 		*hi = v[m - 1];
 		if (clip > 0 && style != RC_PNG_MASK) {

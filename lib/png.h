@@ -8,9 +8,9 @@
  * down; the aspect ratio follows lx:ly.  Written atomically.
  *
  * Colour range: the clip and 1 - clip quantiles of the finite values (of
- * log10 of the positive ones on a log scale; gsl_stats_quantile_from_
- * sorted_data), values beyond drawn in the end colours; min to max if the
- * quantiles coincide.
+ * log10 of the positive ones on a log scale; sorted by qsort, then
+ * gsl_stats_quantile_from_sorted_data), values beyond drawn in the end
+ * colours; min to max if the quantiles coincide.
  *
  * Annotated (the default): the map on a white canvas with, at its right, a
  * colour bar from the bottom of the range to its top labelled with both (3
