@@ -98,11 +98,44 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	return rc_seterr(err, "%s; read as text: %s", gerr.msg, terr.msg);
 }
 
+static int read_channels(FILE *fp, const char *path, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err);
+
+/* gzip or UTF-16 input: the channels of what it decodes to.  One layer
+ * of gzip (a .gz of a .gz is refused, so no nesting multiplies). */
+static int
+decoded(rc_in *in, enum rc_decoding how, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
+{
+	char msg[RC_DECODE_MSG];
+	FILE *fp;
+	int r;
+
+	if (depth > 0 && how == RC_DECODE_GZIP)
+		return rc_seterr(err, "gzip inside gzip: decompress the outer "
+		    "layer first (gunzip)");
+	if ((fp = rc__decode_open(in, how, msg, err)) == NULL)
+		return -1;
+	r = read_channels(fp, NULL, o, s, depth + 1, err);
+	fclose(fp);
+	if (msg[0] != '\0') {
+		rc__chanset_free(s);
+		return rc_seterr(err, "%s", msg);
+	}
+	if (r != 0 && how == RC_DECODE_GZIP) {
+		char inner[sizeof(err->msg)];
+
+		snprintf(inner, sizeof(inner), "%s", err->msg);
+		rc_seterr(err, "gzip-compressed: %s", inner);
+	}
+	return r;
+}
+
 /* Every channel of the input; path is the file fp reads, if known (a
  * vendor file is then handed to Gwyddion as it is). */
 static int
 read_channels(FILE *fp, const char *path, const rc_read_opts *o,
-    rc_chanset *s, rc_err *err)
+    rc_chanset *s, int depth, rc_err *err)
 {
 	rc_in *in;
 	const unsigned char *p;
@@ -121,6 +154,19 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 	if (n == 0) {
 		rc_seterr(err, "empty input");
 		goto out;
+	}
+	if (starts(p, n, "\x1f\x8b", 2)) {
+		r = decoded(in, RC_DECODE_GZIP, o, s, depth, err);
+		goto out;
+	} else if (starts(p, n, "\xff\xfe", 2) || starts(p, n, "\xfe\xff", 2)) {
+		r = decoded(in, RC_DECODE_UTF16, o, s, depth, err);
+		goto out;
+	}
+	if (starts(p, n, "\xef\xbb\xbf", 3)) {	/* UTF-8's byte-order mark */
+		unsigned char bom[3];
+
+		rc__in_read(in, bom, sizeof(bom));
+		n = rc__in_peek(in, 32, &p);
 	}
 	if (starts(p, n, "#surf", 5))
 		g = rc__surf_read(in, o, err);
@@ -208,7 +254,7 @@ read_grid(FILE *fp, const char *path, const rc_read_opts *o, rc_err *err)
 	rc_chanset s = { 0 };
 	rc_grid *g = NULL;
 
-	if (read_channels(fp, path, o, &s, err) == 0)
+	if (read_channels(fp, path, o, &s, 0, err) == 0)
 		g = select_channel(&s, o, err);
 	rc__chanset_free(&s);
 	if (g != NULL && rc_grid_read_finish(g, o, err) != 0) {
@@ -271,7 +317,7 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
 	*n = 0;
 	if ((fp = open_input(path, err)) == NULL)
 		return -1;
-	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, err);
+	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, 0, err);
 	if (fp != stdin)
 		fclose(fp);
 	if (r == 0 && (*info = rc_calloc(s.n, sizeof(**info), err)) == NULL)
