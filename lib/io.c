@@ -2,6 +2,7 @@
 /* io.c - format detection and dispatch: which reader a file goes to,
  * channel selection, the read and write entry points (the helpers the
  * readers and writers share are io_shared.c). */
+#define _GNU_SOURCE	/* memmem */
 #include "io.h"
 #include "io_internal.h"
 #include "atomic.h"
@@ -52,12 +53,25 @@ gwy_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
 	return rc__gwy_read(b, n, s, err);
 }
 
+/* A zip that is not an x3p: an Excel workbook (its entry names are
+ * stored uncompressed) gets a message saying what would read it. */
 static int
 x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
+	static const char sheet[] = "xl/workbook.xml";
+
 	(void)o;
-	return rc__x3p_read(b, n, s, err);
+	if (rc__x3p_read(b, n, s, err) == 0)
+		return 0;
+	if (memmem(b, n, sheet, sizeof(sheet) - 1) == NULL)
+		return -1;
+	return rc_seterr(err, "an Excel workbook (.xlsx, as Mitutoyo's "
+	    "SurfTest exports profiles), not a format read here (no Debian C "
+	    "library reads .xlsx); convert the sheet of the profile to CSV "
+	    "(xlsx2csv, Debian package xlsx2csv, or LibreOffice) with a first "
+	    "line naming the x and height columns with their units, as in "
+	    "\"x in mm,z in um\"");
 }
 
 /* Not text and no format of ours: Gwyddion's.  If Gwyddion cannot read

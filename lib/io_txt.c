@@ -6,16 +6,18 @@
  * kind, meta.KEY, history, filled), so a round trip loses nothing.  Values are
  * printed with %.17g, which reads back exactly; missing points are "nan".
  *
- * Read besides: the header of Gwyddion's ASCII matrix export ("# Width:
- * 10.000 um", "# Height:", "# Value units:", "# Channel:", "# Lateral
- * units:"), and columns: a file of 2 or 3 values per line on 4 lines or
- * more, without our "# nx" or Gwyddion's header, is x-z (a profile) or
- * x-y-z (a map), never a 2- or 3-column matrix.  Columns must lie on a
- * uniform grid (to 1% of the spacing: coordinates printed with 6
- * significant digits on lines of up to 10^4 points are that close); any
- * other set of points is refused, not resampled.  Periodic: our own files
- * say (1 when they do not), a plain matrix is periodic, Gwyddion's export
- * and columns (measurements) are not.
+ * Read besides (the header lines are io_txt_head.c's): Gwyddion's ASCII
+ * export, SurfaceTopography's "h= w=" matrix, and columns.  Values are
+ * separated by blanks, ',' or ';'.  A file of 2 or 3 values per line on 4
+ * lines or more, or any file with a line of column names or units, without
+ * a matrix header, is x-z (a profile) or x-y-z (a map), never a 2- or
+ * 3-column matrix; an index column and a validity flag are set aside; one
+ * value per line is a profile whose length -L gives.  Columns must lie on
+ * a uniform grid (to 1% of the spacing, or to one unit of the last digit
+ * when every coordinate is printed in fixed point); any other set of
+ * points is refused, not resampled.  Periodic: our own files say (1 when
+ * they do not), a plain matrix is periodic, exports and columns
+ * (measurements) are not.
  */
 #include "io_txt.h"
 #include "units.h"

@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <zip.h>
 #include <zlib.h>
 
 #include "io.h"
@@ -341,6 +342,28 @@ refusals(void)
 	    "columns with a line of names");
 }
 
+/* An Excel workbook (a zip with xl/workbook.xml) is refused saying what
+ * would read it. */
+static void
+xlsx(void)
+{
+	static const char wb[] = "<workbook/>";
+	const char *path = test_path("book.xlsx");
+	rc_err err;
+	rc_grid *g;
+	int e;
+	zip_t *z = zip_open(path, ZIP_CREATE | ZIP_TRUNCATE, &e);
+	zip_source_t *src = zip_source_buffer(z, wb, sizeof(wb) - 1, 0);
+
+	zip_file_add(z, "xl/workbook.xml", src, ZIP_FL_OVERWRITE);
+	test_true(zip_close(z) == 0, "write the workbook");
+	g = rc_grid_read(path, NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "Excel workbook") != NULL &&
+	    strstr(err.msg, "xlsx2csv") != NULL, "xlsx refused: '%s'",
+	    g == NULL ? err.msg : "read");
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -353,5 +376,6 @@ main(void)
 	single_column();
 	gzip_input();
 	refusals();
+	xlsx();
 	return test_summary();
 }
