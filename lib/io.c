@@ -74,6 +74,23 @@ x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
 	    "\"x in mm,z in um\"");
 }
 
+/* netCDF, classic or netCDF-4; an HDF5 file that is not in the
+ * contact.engineering layout is said to be one, with what lists it. */
+static int
+nc_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
+{
+	char inner[sizeof(err->msg)];
+
+	if (rc__nc_read(b, n, o, s, err) == 0)
+		return 0;
+	if (!starts(b, n, "\x89HDF\r\n\x1a\n", 8))
+		return -1;
+	snprintf(inner, sizeof(inner), "%s", err->msg);
+	return rc_seterr(err, "an HDF5 file (netCDF-4 or plain HDF5): %s; h5ls "
+	    "(Debian package hdf5-tools) lists its data sets", inner);
+}
+
 /* Not text and no format of ours: Gwyddion's.  If Gwyddion cannot read
  * it either, the text reader has the last word: it reads text with a
  * stray control character or says where it breaks. */
@@ -197,7 +214,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||
 	    starts(p, n, "CDF\x05", 4) || starts(p, n, "\x89HDF\r\n\x1a\n", 8))
-		whole = rc__nc_read;
+		whole = nc_mem;
 	else if (looks_binary(in)) {
 		r = vendor(in, path, o, s, err);
 		goto out;
