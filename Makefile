@@ -10,7 +10,7 @@
 PREFIX  ?= /usr/local
 VERSION  = $(shell sed -n 's/^\#define RC_VERSION "\(.*\)"/\1/p' tools/common.h)
 CC      ?= cc
-PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf
+PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf zlib
 OPTFLAGS ?= -O2 -g
 CFLAGS  ?= $(OPTFLAGS)
 WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
@@ -199,7 +199,7 @@ uninstall:
 # Debian packages needed to build and test (what .ci/run installs).
 deps:
 	apt-get update && apt-get install -y build-essential pkg-config \
-	    libfftw3-dev libgsl-dev libpng-dev libzip-dev libxml2-dev libnetcdf-dev \
+	    libfftw3-dev libgsl-dev libpng-dev libzip-dev libxml2-dev libnetcdf-dev zlib1g-dev \
 	    mandoc gnuplot-nox man-db gwyddion python3-numpy netcdf-bin
 
 clean:
@@ -212,9 +212,9 @@ FUZZ_SECONDS ?= 60
 FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
-FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c \
+FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c lib/io_txt_head.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
-	lib/io_gwyddion.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
+	lib/io_gwyddion.c lib/io_decode.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
 FUZZ_ROWS_SRC = lib/table_read.c lib/rc_err.c
 .PHONY: fuzz
 fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)

@@ -2,6 +2,7 @@
 /* io.c - format detection and dispatch: which reader a file goes to,
  * channel selection, the read and write entry points (the helpers the
  * readers and writers share are io_shared.c). */
+#define _GNU_SOURCE	/* memmem */
 #include "io.h"
 #include "io_internal.h"
 #include "atomic.h"
@@ -52,12 +53,42 @@ gwy_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
 	return rc__gwy_read(b, n, s, err);
 }
 
+/* A zip that is not an x3p: an Excel workbook (its entry names are
+ * stored uncompressed) gets a message saying what would read it. */
 static int
 x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
+	static const char sheet[] = "xl/workbook.xml";
+
 	(void)o;
-	return rc__x3p_read(b, n, s, err);
+	if (rc__x3p_read(b, n, s, err) == 0)
+		return 0;
+	if (memmem(b, n, sheet, sizeof(sheet) - 1) == NULL)
+		return -1;
+	return rc_seterr(err, "an Excel workbook (.xlsx, as Mitutoyo's "
+	    "SurfTest exports profiles), not a format read here (no Debian C "
+	    "library reads .xlsx); convert the sheet of the profile to CSV "
+	    "(xlsx2csv, Debian package xlsx2csv, or LibreOffice) with a first "
+	    "line naming the x and height columns with their units, as in "
+	    "\"x in mm,z in um\"");
+}
+
+/* netCDF, classic or netCDF-4; an HDF5 file that is not in the
+ * contact.engineering layout is said to be one, with what lists it. */
+static int
+nc_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err)
+{
+	char inner[sizeof(err->msg)];
+
+	if (rc__nc_read(b, n, o, s, err) == 0)
+		return 0;
+	if (!starts(b, n, "\x89HDF\r\n\x1a\n", 8))
+		return -1;
+	snprintf(inner, sizeof(inner), "%s", err->msg);
+	return rc_seterr(err, "an HDF5 file (netCDF-4 or plain HDF5): %s; h5ls "
+	    "(Debian package hdf5-tools) lists its data sets", inner);
 }
 
 /* Not text and no format of ours: Gwyddion's.  If Gwyddion cannot read
@@ -98,11 +129,44 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	return rc_seterr(err, "%s; read as text: %s", gerr.msg, terr.msg);
 }
 
+static int read_channels(FILE *fp, const char *path, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err);
+
+/* gzip or UTF-16 input: the channels of what it decodes to.  One layer
+ * of gzip (a .gz of a .gz is refused, so no nesting multiplies). */
+static int
+decoded(rc_in *in, enum rc_decoding how, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
+{
+	char msg[RC_DECODE_MSG];
+	FILE *fp;
+	int r;
+
+	if (depth > 0 && how == RC_DECODE_GZIP)
+		return rc_seterr(err, "gzip inside gzip: decompress the outer "
+		    "layer first (gunzip)");
+	if ((fp = rc__decode_open(in, how, msg, err)) == NULL)
+		return -1;
+	r = read_channels(fp, NULL, o, s, depth + 1, err);
+	fclose(fp);
+	if (msg[0] != '\0') {
+		rc__chanset_free(s);
+		return rc_seterr(err, "%s", msg);
+	}
+	if (r != 0 && how == RC_DECODE_GZIP) {
+		char inner[sizeof(err->msg)];
+
+		snprintf(inner, sizeof(inner), "%s", err->msg);
+		rc_seterr(err, "gzip-compressed: %s", inner);
+	}
+	return r;
+}
+
 /* Every channel of the input; path is the file fp reads, if known (a
  * vendor file is then handed to Gwyddion as it is). */
 static int
 read_channels(FILE *fp, const char *path, const rc_read_opts *o,
-    rc_chanset *s, rc_err *err)
+    rc_chanset *s, int depth, rc_err *err)
 {
 	rc_in *in;
 	const unsigned char *p;
@@ -122,6 +186,19 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		rc_seterr(err, "empty input");
 		goto out;
 	}
+	if (starts(p, n, "\x1f\x8b", 2)) {
+		r = decoded(in, RC_DECODE_GZIP, o, s, depth, err);
+		goto out;
+	} else if (starts(p, n, "\xff\xfe", 2) || starts(p, n, "\xfe\xff", 2)) {
+		r = decoded(in, RC_DECODE_UTF16, o, s, depth, err);
+		goto out;
+	}
+	if (starts(p, n, "\xef\xbb\xbf", 3)) {	/* UTF-8's byte-order mark */
+		unsigned char bom[3];
+
+		rc__in_read(in, bom, sizeof(bom));
+		n = rc__in_peek(in, 32, &p);
+	}
 	if (starts(p, n, "#surf", 5))
 		g = rc__surf_read(in, o, err);
 	else if (starts(p, n, npy_magic, 6))
@@ -137,7 +214,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||
 	    starts(p, n, "CDF\x05", 4) || starts(p, n, "\x89HDF\r\n\x1a\n", 8))
-		whole = rc__nc_read;
+		whole = nc_mem;
 	else if (looks_binary(in)) {
 		r = vendor(in, path, o, s, err);
 		goto out;
@@ -208,7 +285,7 @@ read_grid(FILE *fp, const char *path, const rc_read_opts *o, rc_err *err)
 	rc_chanset s = { 0 };
 	rc_grid *g = NULL;
 
-	if (read_channels(fp, path, o, &s, err) == 0)
+	if (read_channels(fp, path, o, &s, 0, err) == 0)
 		g = select_channel(&s, o, err);
 	rc__chanset_free(&s);
 	if (g != NULL && rc_grid_read_finish(g, o, err) != 0) {
@@ -271,7 +348,7 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
 	*n = 0;
 	if ((fp = open_input(path, err)) == NULL)
 		return -1;
-	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, err);
+	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, 0, err);
 	if (fp != stdin)
 		fclose(fp);
 	if (r == 0 && (*info = rc_calloc(s.n, sizeof(**info), err)) == NULL)

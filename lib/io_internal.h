@@ -134,6 +134,16 @@ int rc__io_set_unit(char dst[32], const char *u, rc_err *err);
  * (the length units are those of units.h). */
 double rc__io_per_metre(const char *u);
 
+/* Input decoded before detection (io_decode.c): gzip (magic 1f 8b) and
+ * UTF-16 text (after its byte-order mark FF FE or FE FF, which the
+ * decoder reads) as a read-only stream of the plain bytes, pulling from
+ * in.  msg (RC_DECODE_MSG bytes, the caller's) says why decoding failed
+ * when a read from the stream fails; "" otherwise. */
+#define RC_DECODE_MSG 160
+enum rc_decoding { RC_DECODE_GZIP, RC_DECODE_UTF16 };
+FILE *rc__decode_open(rc_in *in, enum rc_decoding how, char *msg,
+    rc_err *err);
+
 /* The rest of the input in memory (*buf malloc'ed, *len bytes), growing
  * with what the input really holds. */
 int rc__in_slurp(rc_in *in, unsigned char **buf, size_t *len, rc_err *err);

@@ -6,18 +6,20 @@
  * kind, meta.KEY, history, filled), so a round trip loses nothing.  Values are
  * printed with %.17g, which reads back exactly; missing points are "nan".
  *
- * Read besides: the header of Gwyddion's ASCII matrix export ("# Width:
- * 10.000 um", "# Height:", "# Value units:", "# Channel:", "# Lateral
- * units:"), and columns: a file of 2 or 3 values per line on 4 lines or
- * more, without our "# nx" or Gwyddion's header, is x-z (a profile) or
- * x-y-z (a map), never a 2- or 3-column matrix.  Columns must lie on a
- * uniform grid (to 1% of the spacing: coordinates printed with 6
- * significant digits on lines of up to 10^4 points are that close); any
- * other set of points is refused, not resampled.  Periodic: our own files
- * say (1 when they do not), a plain matrix is periodic, Gwyddion's export
- * and columns (measurements) are not.
+ * Read besides (the header lines are io_txt_head.c's): Gwyddion's ASCII
+ * export, SurfaceTopography's "h= w=" matrix, and columns.  Values are
+ * separated by blanks, ',' or ';'.  A file of 2 or 3 values per line on 4
+ * lines or more, or any file with a line of column names or units, without
+ * a matrix header, is x-z (a profile) or x-y-z (a map), never a 2- or
+ * 3-column matrix; an index column and a validity flag are set aside; one
+ * value per line is a profile whose length -L gives.  Columns must lie on
+ * a uniform grid (to 1% of the spacing, or to one unit of the last digit
+ * when every coordinate is printed in fixed point); any other set of
+ * points is refused, not resampled.  Periodic: our own files say (1 when
+ * they do not), a plain matrix is periodic, exports and columns
+ * (measurements) are not.
  */
-#include "io_internal.h"
+#include "io_txt.h"
 #include "units.h"
 
 #include <ctype.h>
@@ -25,7 +27,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAGIC "# surf text grid: one row (fixed y) per line, x along the line"
 #define TOKEN_MAX 128
 
 int
@@ -36,7 +37,7 @@ rc__txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 
 	if (rc__io_filled_text(g, &filled, err) != 0)
 		return -1;
-	bad |= fprintf(fp, "%s\n# nx = %zu\n# ny = %zu\n", MAGIC, g->nx, g->ny) < 0;
+	bad |= fprintf(fp, "%s\n# nx = %zu\n# ny = %zu\n", RC_TXT_MAGIC, g->nx, g->ny) < 0;
 	rc_format_double(num, sizeof(num), g->lx);
 	bad |= fprintf(fp, "# lx = %s\n", num) < 0;
 	rc_format_double(num, sizeof(num), g->ly);
@@ -67,179 +68,11 @@ rc__txt_write(const rc_grid *g, FILE *fp, rc_err *err)
 	return 0;
 }
 
-struct header {
-	int have_nx, have_ny, have_lx, have_ly, kind;
-	size_t nx, ny;
-	double lx, ly;
-	char unit[32], z_unit[32];
-	int periodic;		/* -1 not said */
-	int own;		/* our magic line */
-	int gwy;		/* Gwyddion's export header */
-	int have_width, have_height;
-	double width, height;	/* Gwyddion's, in wunit and hunit */
-	char wunit[32], hunit[32];
-	char **mkey, **mval, **hist;
-	size_t nmeta, nhist;
-	char *filled;		/* our list of filled points */
-};
-
-static int
-push(char ***v, size_t n, const char *s)
-{
-	char **p = realloc(*v, (n + 1) * sizeof(**v));
-
-	if (p == NULL)
-		return -1;
-	*v = p;
-	return (p[n] = strdup(s)) == NULL ? -1 : 0;
-}
-
-/* A unit of at most 31 bytes into dst. */
-static int
-unit_copy(char *dst, const char *s, size_t lineno, rc_err *err)
-{
-	if (strlen(s) >= 32)
-		return rc_seterr(err, "line %zu: unit longer than 31 characters", lineno);
-	strcpy(dst, s);
-	return 0;
-}
-
-/* Gwyddion's "# Key: value" header lines (English labels); anything else
- * is a free comment.  Width and Height are "NUMBER UNIT". */
-static int
-gwy_comment(struct header *h, char *key, size_t lineno, rc_err *err)
-{
-	char *colon = strstr(key, ": "), *val, *e, q[64];
-
-	if (colon == NULL)
-		return 0;
-	*colon = '\0';
-	for (val = colon + 2; *val == ' ' || *val == '\t'; val++)
-		;
-	for (e = val + strlen(val); e > val && isspace((unsigned char)e[-1]); e--)
-		;
-	*e = '\0';
-	if (strcmp(key, "Width") == 0 || strcmp(key, "Height") == 0) {
-		int w = key[0] == 'W';
-		double *v = w ? &h->width : &h->height;
-		char *end;
-
-		*v = strtod(val, &end);
-		if (end == val || !(*v > 0) || !isfinite(*v) ||
-		    (*end != '\0' && *end != ' ' && *end != '\t'))
-			return rc_seterr(err, "line %zu: %s '%s' is not a positive "
-			    "length", lineno, key, rc__io_quote(q, sizeof(q), val,
-			    strlen(val)));
-		while (*end == ' ' || *end == '\t')
-			end++;
-		if (unit_copy(w ? h->wunit : h->hunit, end, lineno, err) != 0)
-			return -1;
-		*(w ? &h->have_width : &h->have_height) = 1;
-		h->gwy = 1;
-	} else if (strcmp(key, "Value units") == 0) {
-		if (unit_copy(h->z_unit, val, lineno, err) != 0)
-			return -1;
-		h->gwy = 1;
-	} else if (strcmp(key, "Lateral units") == 0) {
-		if (unit_copy(h->unit, val, lineno, err) != 0)
-			return -1;
-		h->gwy = 1;
-	} else if (strcmp(key, "Channel") == 0) {
-		if (push(&h->mkey, h->nmeta, "channel") != 0)
-			return rc_seterr(err, "out of memory");
-		if (push(&h->mval, h->nmeta, val) != 0) {
-			free(h->mkey[h->nmeta]);
-			return rc_seterr(err, "out of memory");
-		}
-		h->nmeta++;
-		h->gwy = 1;
-	}
-	return 0;
-}
-
-/* A "# key = value" comment we know; anything else is a free comment. */
-static int
-comment(struct header *h, char *line, size_t lineno, rc_err *err)
-{
-	char *key, *eq, *val, *e, q[64];
-	int r;
-
-	if (strcmp(line, MAGIC) == 0)
-		h->own = 1;
-	for (key = line + 1; *key == ' ' || *key == '\t'; key++)
-		;
-	if ((eq = strstr(key, " = ")) == NULL)
-		return gwy_comment(h, key, lineno, err);
-	*eq = '\0';
-	val = eq + 3;
-	for (e = val + strlen(val); e > val && isspace((unsigned char)e[-1]); e--)
-		;
-	*e = '\0';
-	if (strcmp(key, "nx") == 0 || strcmp(key, "ny") == 0) {
-		size_t *v = key[1] == 'x' ? &h->nx : &h->ny;
-		int *have = key[1] == 'x' ? &h->have_nx : &h->have_ny;
-
-		if (*have)
-			return rc_seterr(err, "line %zu: %s given twice", lineno, key);
-		if (rc__parse_size(val, v) != 0)
-			return rc_seterr(err, "line %zu: %s = '%s' is not a size",
-			    lineno, key, rc__io_quote(q, sizeof(q), val, strlen(val)));
-		*have = 1;
-	} else if (strcmp(key, "lx") == 0 || strcmp(key, "ly") == 0) {
-		double *v = key[1] == 'x' ? &h->lx : &h->ly;
-		int *have = key[1] == 'x' ? &h->have_lx : &h->have_ly;
-
-		if (*have)
-			return rc_seterr(err, "line %zu: %s given twice", lineno, key);
-		if (rc__parse_double(val, v) != 0)
-			return rc_seterr(err, "line %zu: %s = '%s' is not a number",
-			    lineno, key, rc__io_quote(q, sizeof(q), val, strlen(val)));
-		*have = 1;
-	} else if (strcmp(key, "unit") == 0) {
-		if (strlen(val) >= sizeof(h->unit))
-			return rc_seterr(err, "line %zu: unit longer than %zu characters",
-			    lineno, sizeof(h->unit) - 1);
-		strcpy(h->unit, val);
-	} else if (strcmp(key, "z_unit") == 0) {
-		if (strlen(val) >= sizeof(h->z_unit))
-			return rc_seterr(err, "line %zu: z_unit longer than %zu characters",
-			    lineno, sizeof(h->z_unit) - 1);
-		strcpy(h->z_unit, val);
-	} else if (strcmp(key, "periodic") == 0) {
-		if (strcmp(val, "0") != 0 && strcmp(val, "1") != 0)
-			return rc_seterr(err, "line %zu: periodic = '%s': want 0 or 1",
-			    lineno, rc__io_quote(q, sizeof(q), val, strlen(val)));
-		h->periodic = val[0] == '1';
-	} else if (strcmp(key, "kind") == 0) {
-		if ((r = rc_kind_parse(val)) < 0)
-			return rc_seterr(err, "line %zu: unknown kind '%s'", lineno,
-			    rc__io_quote(q, sizeof(q), val, strlen(val)));
-		h->kind = r;
-	} else if (strncmp(key, "meta.", 5) == 0 && key[5] != '\0') {
-		if (push(&h->mkey, h->nmeta, key + 5) != 0)
-			return rc_seterr(err, "out of memory");
-		if (push(&h->mval, h->nmeta, val) != 0) {
-			free(h->mkey[h->nmeta]);
-			return rc_seterr(err, "out of memory");
-		}
-		h->nmeta++;
-	} else if (strcmp(key, "history") == 0) {
-		if (push(&h->hist, h->nhist, val) != 0)
-			return rc_seterr(err, "out of memory");
-		h->nhist++;
-	} else if (strcmp(key, "filled") == 0) {
-		if (h->filled != NULL)
-			return rc_seterr(err, "line %zu: filled given twice", lineno);
-		if ((h->filled = strdup(val)) == NULL)
-			return rc_seterr(err, "out of memory");
-	}
-	return 0;
-}
 
 /* Gwyddion's Width and Height (each with its unit) into lx, ly in one
  * unit, which becomes the lateral unit unless the header names one. */
 static int
-gwy_size(struct header *h, double *lx, double *ly, rc_err *err)
+gwy_size(struct txt_header *h, double *lx, double *ly, rc_err *err)
 {
 	*lx = h->width;
 	*ly = h->height;
@@ -261,11 +94,20 @@ gwy_size(struct header *h, double *lx, double *ly, rc_err *err)
 	return 0;
 }
 
-/* Does a coordinate lie on the uniform grid a0 + k d (to 1% of d)? */
+/* Does a coordinate lie on the uniform grid a0 + k d, to 1% of d or to
+ * ulp, the unit in the last printed digit of the coordinates?  A printed
+ * coordinate is within ulp/2 of the grid it was rounded from, and the
+ * grid through the first and last printed ones within ulp/2 of that
+ * grid, so ulp bounds the distance (Dektak prints 0.15625 um steps as
+ * 0.0, 0.2, 0.3, 0.5: 0.094 off a grid through 0 and 1499.8).  Only for
+ * coordinates all printed in fixed point with the same decimals
+ * (read_values) and a step of at least ulp. */
 static int
-on_grid(double a, double a0, double d, size_t k)
+on_grid(double a, double a0, double d, size_t k, double ulp)
 {
-	return fabs(a - (a0 + (double)k * d)) <= 0.01 * fabs(d);
+	double tol = ulp <= fabs(d) ? ulp : 0;
+
+	return fabs(a - (a0 + (double)k * d)) <= fmax(0.01 * fabs(d), tol);
 }
 
 /* x-z (ncol 2) or x-y-z (ncol 3) columns of n points on a uniform grid:
@@ -273,7 +115,8 @@ on_grid(double a, double a0, double d, size_t k)
  * the order of the file, along x first or along y first; either axis may
  * run backwards. */
 static rc_grid *
-columns(const double *v, size_t ncol, size_t n, rc_err *err)
+columns(const double *v, size_t ncol, size_t n, const double *ulp,
+    rc_err *err)
 {
 	size_t nxg = n, nyg = 1, run, bad = n;
 	double x0 = v[0], y0 = 0, dx, dy, lx, ly;
@@ -309,8 +152,8 @@ columns(const double *v, size_t ncol, size_t n, rc_err *err)
 	for (size_t k = 0; k < n && bad == n; k++) {
 		size_t i = x_fast ? k % nxg : k / nyg, j = x_fast ? k / nxg : k % nyg;
 
-		if (!on_grid(v[k * ncol], x0, dx, i) ||
-		    (ncol == 3 && !on_grid(v[k * ncol + 1], y0, dy, j)))
+		if (!on_grid(v[k * ncol], x0, dx, i, ulp[0]) ||
+		    (ncol == 3 && !on_grid(v[k * ncol + 1], y0, dy, j, ulp[1])))
 			bad = k;
 	}
 	if (bad < n) {
@@ -349,62 +192,54 @@ columns(const double *v, size_t ncol, size_t n, rc_err *err)
 	return g;
 }
 
-/* Long: one pass over the text in file order (header comments, separator,
- * rows, columns); each check sits where its input is read. */
-rc_grid *
-rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+/* Decimals of a number printed in fixed point ("0.0386": 4); -1 for
+ * any other form (an integer, an exponent, nan), whose last digit says
+ * nothing of the precision (%g drops trailing zeros). */
+static int
+decimals(const char *tok)
 {
-	struct header h = { .periodic = -1 };
-	double *v = NULL, lx = 1, ly = 1;
-	size_t nv = 0, cap = 0, nx = 0, rows = 0, lineno = 1, first_line = 0;
-	size_t inrow = 0, tlen = 0;
-	char tok[TOKEN_MAX + 1], q[64], *cline = NULL;
-	rc_grid *g = NULL;
-	int c, at_start = 1, in_comment = 0, comment_is_header = 0;
+	const char *dot = strchr(tok, '.');
+	size_t n;
 
-	if (o != NULL && o->have_l) {
-		lx = o->lx;
-		ly = o->ly;
-	}
-	if ((cline = rc_malloc(RC_HEADER_MAX + 1, err)) == NULL)
-		return NULL;
-	/* One pass over characters: no line is ever held whole, so a long
-	 * row costs nothing beyond its values. */
+	if (dot == NULL || strpbrk(tok, "eEnNiI") != NULL)
+		return -1;
+	n = strspn(dot + 1, "0123456789");
+	return dot[1 + n] == '\0' && n > 0 && n < 300 ? (int)n : -1;
+}
+
+/* The values of a text file: whitespace, ',' or ';' between them (',' a
+ * decimal comma in Gwyddion's export, which never separates with it),
+ * '#' to the end of a line a comment, trailing empty fields (Dektak's
+ * "0.0,-0.00933,,") dropped.  Every row must have as many values as the
+ * first.  ulp[k]: 10^-d if every value of column k < TXT_MAXCOL is
+ * printed in fixed point with d decimals, else 0.
+ * One pass over characters: no line is ever held whole, so a long row
+ * costs nothing beyond its values. */
+static int
+read_values(rc_in *in, int decimal_comma, size_t lineno, double **vals,
+    size_t *nvals, size_t *ncols, size_t *nrows, double *ulp, rc_err *err)
+{
+	double *v = NULL;
+	size_t nv = 0, cap = 0, nx = 0, rows = 0, first_line = 0, inrow = 0;
+	size_t tlen = 0;
+	char tok[TOKEN_MAX + 1], q[64];
+	int c, in_comment = 0, after_sep = 0, empty = 0, dec[TXT_MAXCOL];
+
+	for (size_t k = 0; k < TXT_MAXCOL; k++)
+		dec[k] = -2;	/* no value yet */
 	for (;;) {
 		c = rc__in_getc(in);
-		if (in_comment) {
-			if (c != '\n' && c != EOF) {
-				if (comment_is_header) {
-					if (tlen >= RC_HEADER_MAX) {
-						rc_seterr(err, "line %zu: comment longer than %zu bytes",
-						    lineno, RC_HEADER_MAX);
-						goto fail;
-					}
-					cline[tlen++] = (char)c;
-				}
-				continue;
-			}
-			if (comment_is_header) {
-				cline[tlen] = '\0';
-				if (strlen(cline) == tlen &&
-				    comment(&h, cline, lineno, err) != 0)
-					goto fail;
-			}
-			in_comment = 0;
-			tlen = 0;
-		} else if (c == '#') {
-			if (tlen > 0)
-				goto token;
-			/* Only whole-line comments before the data carry keys. */
-			in_comment = 1;
-			comment_is_header = at_start && rows == 0 && inrow == 0;
-			cline[0] = '#';
-			tlen = 1;
+		if (in_comment && c != '\n' && c != EOF)
 			continue;
-		} else if (c == 0) {
+		in_comment = 0;
+		if (c == ',' && decimal_comma)
+			c = '.';
+		if (c == 0) {
 			rc_seterr(err, "line %zu: NUL byte: not a text file", lineno);
 			goto fail;
-		} else if (c != EOF && c != '\n' && !isspace(c)) {
+		}
+		if (c != EOF && c != '\n' && c != '#' && c != ',' && c != ';' &&
+		    !isspace(c)) {
 			if (tlen >= TOKEN_MAX) {
 				tok[TOKEN_MAX] = '\0';
 				rc_seterr(err, "line %zu: '%s' is not a number", lineno,
@@ -412,10 +247,8 @@ rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
 				goto fail;
 			}
 			tok[tlen++] = (char)c;
-			at_start = 0;
 			continue;
 		}
-token:
 		if (tlen > 0) {
 			double d;
 
@@ -423,6 +256,11 @@ token:
 			if (rc__parse_double(tok, &d) != 0) {
 				rc_seterr(err, "line %zu: '%s' is not a number", lineno,
 				    rc__io_quote(q, sizeof(q), tok, tlen));
+				goto fail;
+			}
+			if (empty) {
+				rc_seterr(err, "line %zu: an empty field before '%s'",
+				    lineno, rc__io_quote(q, sizeof(q), tok, tlen));
 				goto fail;
 			}
 			if (nv == cap) {
@@ -451,16 +289,23 @@ token:
 				    lineno, RC_GRID_MAX_DIM);
 				goto fail;
 			}
+			if (inrow < TXT_MAXCOL && dec[inrow] != -1) {
+				int dk = decimals(tok);
+
+				dec[inrow] = dec[inrow] == -2 || dec[inrow] == dk ? dk : -1;
+			}
 			v[nv++] = d;
 			inrow++;
 			tlen = 0;
+			after_sep = 0;
 		}
-		if (c == '#') {		/* a comment after values */
+		if (c == ',' || c == ';') {
+			if (after_sep || inrow == 0)
+				empty = 1;	/* an error if a value follows */
+			after_sep = 1;
+		} else if (c == '#')
 			in_comment = 1;
-			comment_is_header = 0;
-			continue;
-		}
-		if (c == '\n' || c == EOF) {
+		else if (c == '\n' || c == EOF) {
 			if (inrow > 0) {
 				if (rows == 0) {
 					nx = inrow;
@@ -477,7 +322,7 @@ token:
 				rows++;
 				inrow = 0;
 			}
-			at_start = 1;
+			after_sep = empty = 0;
 			if (c == EOF)
 				break;
 			lineno++;
@@ -485,46 +330,237 @@ token:
 	}
 	if (rc__in_check(in, err) != 0)
 		goto fail;
+	for (size_t k = 0; k < TXT_MAXCOL; k++)
+		ulp[k] = dec[k] > 0 ? pow(10, -dec[k]) : 0;
+	*vals = v;
+	*nvals = nv;
+	*ncols = nx;
+	*nrows = rows;
+	return 0;
+fail:
+	free(v);
+	return -1;
+}
+
+/* Columns with a line of names or units, or 1-3 unlabelled ones: which
+ * column is an index (named "index", or 3 columns whose first counts
+ * 0, 1, 2, ... beside a strictly monotonic second: csv-2's "index,x,y"),
+ * which a validity flag (named "valid" or in unit "1/0", as HFM's), and
+ * the units of the coordinates and heights.  Returns the grid of the
+ * rest as a profile (x z, or z alone) or map (x y z). */
+static rc_grid *
+labelled_columns(const struct txt_header *h, const double *v, size_t ncol,
+    size_t rows, const double *ulp, const rc_read_opts *o, rc_err *err)
+{
+	int idx = -1, valid = -1;
+	size_t use[TXT_MAXCOL], m = 0;
+	char xu[32] = "", zu[32] = "", yu[32] = "", u[TXT_MAXCOL][32];
+	double *w = NULL, ulpw[2] = { 0, 0 };
+	rc_grid *g = NULL;
+
+	if (ncol > TXT_MAXCOL) {
+		rc_seterr(err, "%zu columns with a line of names or units: read "
+		    "are a height column, x-z or x-y-z columns (and an index or "
+		    "'valid' column)", ncol);
+		return NULL;
+	}
+	if (h->ncolname > 0 && h->ncolname != ncol) {
+		rc_seterr(err, "line %zu: '%s' is neither a header this reader "
+		    "knows nor a line of names for the %zu columns of numbers "
+		    "(it has %zu fields)", h->colname_line, h->colname_text, ncol,
+		    h->ncolname);
+		return NULL;
+	}
+	if (h->ncolunit > 0 && h->ncolunit != ncol) {
+		rc_seterr(err, "the line of units has %zu, the numbers %zu "
+		    "columns", h->ncolunit, ncol);
+		return NULL;
+	}
+	for (size_t k = 0; k < ncol; k++) {
+		u[k][0] = '\0';
+		if (h->ncolunit > 0)
+			strcpy(u[k], h->colunit[k]);
+		else if (h->ncolname > 0 && !rc__txt_name_unit(h->colname[k], u[k]))
+			u[k][0] = '\0';
+		if (h->ncolname > 0 && strcasecmp(h->colname[k], "index") == 0)
+			idx = (int)k;
+		if ((h->ncolname > 0 && strcasecmp(h->colname[k], "valid") == 0) ||
+		    strcmp(u[k], "1/0") == 0)
+			valid = (int)k;
+	}
+	if (idx < 0 && valid < 0 && ncol == 3 && rows >= 2) {
+		size_t r = 0;
+		int up = v[4] > v[1];
+
+		while (r < rows && v[r * 3] == v[0] + (double)r &&
+		    v[0] == floor(v[0]) && (r == 0 ||
+		    (up ? v[r * 3 + 1] > v[r * 3 - 2] : v[r * 3 + 1] < v[r * 3 - 2])))
+			r++;
+		if (r == rows)
+			idx = 0;
+	}
+	for (size_t k = 0; k < ncol; k++)
+		if ((int)k != idx && (int)k != valid)
+			use[m++] = k;
+	if (m > 3 || m == 0) {
+		rc_seterr(err, "%zu columns with a line of names or units, %d "
+		    "of them an index or validity flag: read are a height column, "
+		    "x-z or x-y-z columns", ncol, (idx >= 0) + (valid >= 0));
+		return NULL;
+	}
+	if ((w = rc_malloc(rows * m * sizeof(*w), err)) == NULL)
+		return NULL;
+	for (size_t r = 0; r < rows; r++) {
+		for (size_t k = 0; k < m; k++)
+			w[r * m + k] = v[r * ncol + use[k]];
+		if (valid >= 0) {
+			double f = v[r * ncol + (size_t)valid];
+
+			if (f != 0 && f != 1) {
+				rc_seterr(err, "data line %zu: validity flag %g: want 0 "
+				    "or 1", r + 1, f);
+				goto out;
+			}
+			if (f == 0)
+				w[r * m + m - 1] = NAN;
+		}
+	}
+	strcpy(xu, u[use[0]]);
+	strcpy(zu, u[use[m - 1]]);
+	if (m == 3)
+		strcpy(yu, u[use[1]]);
+	if (m == 1) {
+		/* one height column: a profile of unknown step (-L gives it) */
+		double lx = o != NULL && o->have_l ? o->lx : 1;
+
+		if ((g = rc__io_grid_alloc(rows, 1, lx, lx / (double)rows, err)) ==
+		    NULL)
+			goto out;
+		memcpy(g->z, w, rows * sizeof(*w));
+		g->periodic = 0;
+		xu[0] = '\0';
+	} else {
+		for (size_t k = 0; k + 1 < m; k++)
+			ulpw[k] = use[k] < TXT_MAXCOL ? ulp[use[k]] : 0;
+		if (m == 3 && strcmp(xu, yu) != 0 && yu[0] != '\0') {
+			rc_seterr(err, "x in '%s', y in '%s': give both columns in one "
+			    "length unit", xu, yu);
+			goto out;
+		}
+		if ((g = columns(w, m, rows, ulpw, err)) == NULL)
+			goto out;
+	}
+	strcpy(g->unit, xu);
+	/* heights in the lateral unit unless their column says */
+	strcpy(g->z_unit, zu);
+out:
+	free(w);
+	return g;
+}
+
+/* The assembled grid of a matrix: our header, Gwyddion's, or
+ * SurfaceTopography's "h= w=" one. */
+static rc_grid *
+matrix(struct txt_header *h, double *v, size_t nx, size_t rows,
+    const rc_read_opts *o, rc_err *err)
+{
+	double lx = 1, ly = 1;
+	rc_grid *g;
+
+	if (o != NULL && o->have_l) {
+		lx = o->lx;
+		ly = o->ly;
+	}
+	if ((h->have_nx && h->nx != nx) || (h->have_ny && h->ny != rows)) {
+		rc_seterr(err, "header says %zux%zu, the data are %zux%zu",
+		    h->have_nx ? h->nx : nx, h->have_ny ? h->ny : rows, nx, rows);
+		return NULL;
+	}
+	if (h->have_hw && (h->w_cols != nx || h->h_rows != rows)) {
+		rc_seterr(err, "header says h=%zu w=%zu (rows, columns), the data "
+		    "are %zu rows of %zu", h->h_rows, h->w_cols, rows, nx);
+		return NULL;
+	}
+	if (h->have_lx != h->have_ly) {
+		rc_seterr(err, "header gives %s without %s", h->have_lx ? "lx" : "ly",
+		    h->have_lx ? "ly" : "lx");
+		return NULL;
+	}
+	if (h->have_lx) {
+		lx = h->lx;
+		ly = h->ly;
+	}
+	if (h->have_width != h->have_height) {
+		rc_seterr(err, "Gwyddion header gives %s without %s",
+		    h->have_width ? "Width" : "Height",
+		    h->have_width ? "Height" : "Width");
+		return NULL;
+	}
+	if (h->have_width && gwy_size(h, &lx, &ly, err) != 0)
+		return NULL;
+	if (h->have_pixel) {
+		lx = (double)nx * h->pixel;
+		ly = (double)rows * h->pixel;
+		strcpy(h->unit, h->pixel_unit);
+	}
+	if ((g = rc__io_grid_alloc(nx, rows, lx, ly, err)) == NULL)
+		return NULL;
+	memcpy(g->z, v, nx * rows * sizeof(*v));
+	if (h->have_zfac) {
+		for (size_t k = 0; k < nx * rows; k++)
+			g->z[k] *= h->zfac;
+		strcpy(h->z_unit, h->zfac_unit);
+	} else if (h->data_unit[0] != '\0' && h->z_unit[0] == '\0')
+		strcpy(h->z_unit, h->data_unit);
+	/* Our files say; a plain matrix is periodic by rule; Gwyddion's and
+	 * SurfaceTopography's exports are measurements. */
+	g->periodic = h->periodic >= 0 ? h->periodic :
+	    !(h->gwy || h->have_hw || h->have_pixel);
+	return g;
+}
+
+rc_grid *
+rc__txt_read(rc_in *in, const rc_read_opts *o, rc_err *err)
+{
+	struct txt_header h = { .periodic = -1 };
+	double *v = NULL, ulp[TXT_MAXCOL] = { 0 };
+	size_t nv = 0, nx = 0, rows = 0, lineno = 1;
+	rc_grid *g = NULL;
+	int labelled, plain;
+
+	if (rc__txt_preamble(in, &h, &lineno, err) != 0 ||
+	    read_values(in, h.gwy, lineno, &v, &nv, &nx, &rows, ulp, err) != 0)
+		goto fail;
 	if (rows == 0) {
 		rc_seterr(err, "no values (empty input or only comments)");
 		goto fail;
 	}
-	if ((h.have_nx && h.nx != nx) || (h.have_ny && h.ny != rows)) {
-		rc_seterr(err, "header says %zux%zu, the data are %zux%zu",
-		    h.have_nx ? h.nx : nx, h.have_ny ? h.ny : rows, nx, rows);
+	/* the count of points, or of intervals (xy-2.txt's 23 for 24) */
+	if (h.have_count && h.count != rows && h.count + 1 != rows) {
+		rc_seterr(err, "the header gives %zu points, the data have %zu "
+		    "lines", h.count, rows);
 		goto fail;
 	}
-	if (h.have_lx != h.have_ly) {
-		rc_seterr(err, "header gives %s without %s", h.have_lx ? "lx" : "ly",
-		    h.have_lx ? "ly" : "lx");
+	labelled = h.ncolname > 0 || h.ncolunit > 0;
+	plain = !h.own && !h.have_nx && !h.have_ny && !h.have_width && !h.gwy &&
+	    !h.have_hw && !h.have_pixel;
+	if (plain && (labelled || (nx == 1 && rows >= 2) ||
+	    ((nx == 2 || nx == 3) && rows >= 4)))
+		g = labelled_columns(&h, v, nx, rows, ulp, o, err);
+	else if (labelled) {
+		rc_seterr(err, "line %zu: a line of column names or units in a "
+		    "file with a matrix header", h.colname_line);
 		goto fail;
-	}
-	if (h.have_lx) {
-		lx = h.lx;
-		ly = h.ly;
-	}
-	if (h.have_width != h.have_height) {
-		rc_seterr(err, "Gwyddion header gives %s without %s",
-		    h.have_width ? "Width" : "Height", h.have_width ? "Height" : "Width");
-		goto fail;
-	}
-	if (h.have_width && gwy_size(&h, &lx, &ly, err) != 0)
-		goto fail;
-	if (!h.own && !h.have_nx && !h.have_ny && !h.have_width &&
-	    (nx == 2 || nx == 3) && rows >= 4)
-		g = columns(v, nx, rows, err);
-	else if ((g = rc__io_grid_alloc(nx, rows, lx, ly, err)) != NULL) {
-		memcpy(g->z, v, nv * sizeof(*v));
-		/* Our files say; a plain matrix is periodic by rule; Gwyddion
-		 * exports measurements. */
-		g->periodic = h.periodic >= 0 ? h.periodic : !h.gwy;
-	}
+	} else
+		g = matrix(&h, v, nx, rows, o, err);
 	if (g == NULL)
 		goto fail;
-	strcpy(g->z_unit, h.z_unit);
-	g->kind = (enum rc_kind)h.kind;
+	/* what '#' header lines say has the last word */
+	if (h.z_unit[0] != '\0')
+		strcpy(g->z_unit, h.z_unit);
 	if (h.unit[0] != '\0')
 		strcpy(g->unit, h.unit);
+	g->kind = (enum rc_kind)h.kind;
 	for (size_t i = 0; i < h.nmeta; i++)
 		if (rc_grid_meta_set(g, h.mkey[i], h.mval[i], err) != 0)
 			goto fail;
@@ -538,17 +574,7 @@ fail:
 	rc_grid_free(g);
 	g = NULL;
 out:
-	for (size_t i = 0; i < h.nmeta; i++) {
-		free(h.mkey[i]);
-		free(h.mval[i]);
-	}
-	for (size_t i = 0; i < h.nhist; i++)
-		free(h.hist[i]);
-	free(h.mkey);
-	free(h.mval);
-	free(h.hist);
-	free(h.filled);
-	free(cline);
+	rc__txt_header_free(&h);
 	free(v);
 	return g;
 }

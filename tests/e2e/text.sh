@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# text.sh - text exports through the tools, against what SurfaceTopography's
+# tests expect of the same files (tests/data/st_*, see st_text.README):
+# its German Gwyddion export (12.34 um by 5678.9 nm, heights as in the
+# file), its UTF-16 CSV with an index column (8 points), its one-column
+# profile (heights 1..9, length from -L); gzip and UTF-16 through a pipe;
+# an HDF5 file that is not in the contact.engineering layout is named so.
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+D=$RC_TOP/tests/data
+
+# refused DESC PATTERN CMD...: exit 1 and a message matching PATTERN (grep -E)
+refused() {
+	d=$1; pat=$2; shift 2
+	"$@" >/dev/null 2>"$T_TMP/err"; got=$?
+	if [ "$got" = 1 ] && grep -Eq "$pat" "$T_TMP/err"; then
+		pass "$d"
+	else
+		fail "$d: exit $got, message '$(head -c 300 "$T_TMP/err")'"
+	fi
+}
+# chan FILE COLUMN: a column of surfstat --channels (first channel)
+chan() {
+	surfstat --channels "$1" | awk -F'\t' -v name="$2" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+		NR == 2 { print $c[name] }'
+}
+
+g=$D/st_gwyddion-export-german.txt
+check "German export: 3 x 4" [ "$(chan "$g" nx) $(chan "$g" ny)" = "3 4" ]
+check "German export: Breite 12.34 um" [ "$(chan "$g" lx)" = 12.34 ]
+check "German export: Hoehe 5678.9 nm = 5.6789 um" [ "$(chan "$g" ly)" = 5.6789 ]
+check "German export: channel 'My Channel Name'" [ "$(chan "$g" title)" = "My Channel Name" ]
+surfwarp -q --unit m "$g" -o g.txt
+check "German export: the heights of the file in m, row by row" \
+	[ "$(grep -v '^#' g.txt | tr '\n' ' ')" = "1 1.5 3 -2 -3 -6 0 0 0 9 9 9 " ]
+
+c=$D/st_csv-2.csv
+check "UTF-16 CSV with an index column: 8 points" [ "$(chan "$c" nx) $(chan "$c" ny)" = "8 1" ]
+check "UTF-16 CSV: x in um" [ "$(chan "$c" unit) $(chan "$c" z_unit)" = "um um" ]
+check "UTF-16 CSV: the same through gzip and a pipe" \
+	[ "$(gzip -c "$c" | surfstat --channels -)" = "$(surfstat --channels "$c")" ]
+
+s=$D/st_single_column.txt
+surfwarp -q -L 2.3 "$s" -o s.txt
+check "one column: a profile of 9 points" [ "$(chan s.txt nx) $(chan s.txt ny)" = "9 1" ]
+check "one column: -L 2.3 is its length" [ "$(chan s.txt lx)" = 2.3 ]
+check "one column: heights 1..9" [ "$(grep -v '^#' s.txt | tr '\n' ' ')" = "1 2 3 4 5 6 7 8 9 " ]
+
+# The nonsense text of SurfaceTopography's examples, written here.
+printf 'This is nonsense. Should raise CannotDetectFileFormat.' > n.txt
+refused "prose is not a height file" 'is text and no numbers follow' surfstat n.txt
+
+if command -v ncgen >/dev/null 2>&1; then
+	printf 'netcdf d {\ndimensions:\n a = 2 ;\n b = 3 ;\nvariables:\n double dataset1(a, b) ;\ndata:\n dataset1 = 1, 2, 3, 4, 5, 6 ;\n}\n' > d.cdl
+	ncgen -k nc4 -o d.h5 d.cdl
+	refused "HDF5 data sets without the netCDF layout: said, with h5ls" \
+		'an HDF5 file .*h5ls' surfstat d.h5
+fi
+summary
