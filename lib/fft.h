@@ -70,8 +70,11 @@ int rc_fft_set_threads(int n);
  * not this library's: loading it makes later MEASURE plans of the same
  * sizes and thread counts instant.  Import: 1 if loaded, 0 if path does
  * not exist or is empty (nothing to load yet), -1 if it cannot be read or
- * is not FFTW wisdom.  Export writes all wisdom atomically (temporary file + rename),
- * so concurrent runs sharing one file never see a torn one. */
+ * is not FFTW wisdom: text with a NUL byte, or RC_FFT_WISDOM_MAX_BYTES
+ * or more (so a device such as /dev/zero is refused, not read forever).
+ * Export writes all wisdom atomically (temporary file + rename), so
+ * concurrent runs sharing one file never see a torn one. */
+#define RC_FFT_WISDOM_MAX_BYTES (16 << 20)
 int rc_fft_wisdom_import(const char *path, rc_err *err);
 int rc_fft_wisdom_export(const char *path, rc_err *err);
 
