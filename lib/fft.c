@@ -84,6 +84,32 @@ rc_fft_effort_auto(size_t nx, size_t ny, double pairs)
 	return pairs >= RC_FFT_MEASURE_PAIRS ? RC_FFT_MEASURE : RC_FFT_WISDOM;
 }
 
+double
+rc_fft_plan_limit(size_t nx, size_t ny, double pairs)
+{
+	rc_fft f;
+	rc_err err;
+	double t0, pair;
+
+	if (rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, &err) != 0)
+		return -1;
+	/* The first pair touches the buffers' pages: time the second. */
+	rc_fft_forward(&f);
+	rc_fft_backward(&f);
+	t0 = rc_clock();
+	rc_fft_forward(&f);
+	rc_fft_backward(&f);
+	pair = rc_clock() - t0;
+	rc_fft_free(&f);
+	return RC_FFT_PLAN_SHARE * pairs * pair / RC_FFT_PLAN_CALLS;
+}
+
+void
+rc_fft_set_plan_limit(double seconds)
+{
+	fftw_set_timelimit(seconds >= 0 ? seconds : FFTW_NO_TIMELIMIT);
+}
+
 static unsigned
 effort_flags(enum rc_fft_effort e)
 {
