@@ -121,8 +121,6 @@ $(O)/bench/bench_free: $(O)/bench/bench_free.o $(O)/tests/free_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 $(O)/bench/bench_gfmd: $(O)/bench/bench_gfmd.o $(O)/tests/rough_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
-$(O)/bench/bench_iter: $(O)/bench/bench_iter.o $(O)/tests/rough_cases.o $(LIB)
-	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
 check: $(TOOLS) $(TESTS)
 	@sh tests/run.sh $(BIN) $(O)/tests
