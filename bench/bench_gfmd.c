@@ -56,6 +56,21 @@
  * rounds in turn; medians and the ratio default / one thread.  Inside
  * make -j N the default is one thread (lib/threads.h), which the header
  * line says: run `make bench` without -j to measure two.
+ *
+ * Last the one-thread rows (issue 29), for n^2 = 256^2 ... 1024^2 (2048^2
+ * with BENCH_BIG=1, 256^2 and 512^2 with BENCH_QUICK=1), the periodic
+ * FIRE solve at p* = 0.05 in ITER_ROUNDS interleaved rounds of: an FFTW
+ * pair (ESTIMATE, as the solver's for one pressure); the solve; gfmd-solve's
+ * contact analysis of it (rc_contact_analyse, every field, and
+ * rc_contact_subpixel, on a plan made beforehand); the solve again on
+ * whole-grid transforms with separate passes (plain) and on the blocked
+ * ones (blocked), whichever RC_FFT_BLOCKED_POINTS picks by default; each
+ * solve after a pair timed just before it, each ratio of one round's
+ * times.  All in process CPU seconds (one thread: the work's own time).
+ * Medians over the rounds: pair_seconds, solve_seconds, iter_in_pairs
+ * (goals 3.0 at 512^2, 2.3 at 1024^2), analysis_in_solve (the analysis
+ * over the solve: goal at most 0.25), plain_ and blocked_iter_in_pairs.  BENCH_ITER_ONLY=1
+ * prints only these.
  */
 #include <math.h>
 #include <stdint.h>
@@ -68,6 +83,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "contact.h"
 #include "fft.h"
 #include "../tests/rough_cases.h"
 #include "solver.h"
@@ -329,6 +345,110 @@ contention(void)
 	return 0;
 }
 
+#define ITER_ROUNDS	5
+
+/* The solve's CPU seconds at p* = 0.05 with the transforms blocked from
+ * block_points on (fft.h); with plan not NULL also the contact analysis's
+ * into *analysis and the iterations into *iters.  -1 on failure. */
+static double
+iter_solve(const rc_grid *g, size_t block_points, rc_fft *plan,
+    double *analysis, long *iters)
+{
+	rc_solver_opts o;
+	rc_solver *s;
+	rc_solve_result r;
+	rc_contact_opts co;
+	rc_contact_stats st;
+	rc_err err;
+	double t0, t1;
+
+	rc_solver_defaults(&o);
+	o.fft_block_points = block_points;
+	if ((s = rc_solver_new(g, &o, &err)) == NULL)
+		goto fail;
+	t0 = cpu_now();
+	if (rc_solver_solve(s, 0.05, &r, &err) < 0)
+		goto fail;
+	t0 = cpu_now() - t0;
+	if (plan != NULL) {
+		rc_contact_defaults(&co);
+		co.modulus = o.modulus;
+		co.gbar = 1;
+		co.pressure = 0.05;
+		co.fft = plan;
+		t1 = cpu_now();
+		if (rc_contact_analyse(g, rc_solver_contact(s), &co, &st, &err) != 0)
+			goto fail;
+		if (!isfinite(rc_contact_subpixel(rc_solver_displacement(s), g->z,
+		    rc_solver_pressure(s), rc_solver_contact(s), g->nx, g->ny,
+		    g->lx, g->ly, o.modulus)))
+			fprintf(stderr, "bench_gfmd: sub-pixel area not finite\n");
+		*analysis = cpu_now() - t1;
+		*iters = r.iterations;
+	}
+	rc_solver_free(s);
+	return t0;
+fail:
+	fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+	rc_solver_free(s);
+	return -1;
+}
+
+/* The one-thread rows (see the top of the file) of the first ns sizes. */
+static int
+iteration_rows(size_t ns)
+{
+	size_t sizes[] = { 256, 512, 1024, 2048 }, z;
+
+	rc_fft_set_threads(1);
+	printf("\n# one thread, FIRE at p* = 0.05, process CPU seconds, medians "
+	    "of %d rounds\n", ITER_ROUNDS);
+	printf("n\titerations\tpair_seconds\tsolve_seconds\titer_in_pairs\t"
+	    "analysis_in_solve\tplain_iter_in_pairs\tblocked_iter_in_pairs\n");
+	for (z = 0; z < ns; z++) {
+		size_t n = sizes[z];
+		rc_grid *g = SURFACE(n);
+		double t[6][ITER_ROUNDS], med[6];
+		long iters = 0;
+		rc_fft plan;
+		rc_err err;
+
+		if (rc_fft_init(&plan, n, n, RC_FFT_ESTIMATE, &err) != 0) {
+			fprintf(stderr, "bench_gfmd: %s\n", err.msg);
+			return 1;
+		}
+		/* Each solve in pairs of a pair timed just before it. */
+		for (int k = 0; k < ITER_ROUNDS; k++) {
+			double pair[3], solve[3];
+
+			fft_pair_seconds(n, &pair[0]);
+			solve[0] = iter_solve(g, RC_FFT_BLOCKED_POINTS, &plan,
+			    &t[2][k], &iters);
+			fft_pair_seconds(n, &pair[1]);
+			solve[1] = iter_solve(g, SIZE_MAX, NULL, NULL, NULL);
+			fft_pair_seconds(n, &pair[2]);
+			solve[2] = iter_solve(g, 0, NULL, NULL, NULL);
+			if (solve[0] < 0 || solve[1] < 0 || solve[2] < 0)
+				return 1;
+			t[0][k] = pair[0];
+			t[1][k] = solve[0];
+			t[2][k] /= solve[0];
+			t[3][k] = solve[1] / (double)iters / pair[1];
+			t[4][k] = solve[2] / (double)iters / pair[2];
+			t[5][k] = solve[0] / (double)iters / pair[0];
+		}
+		for (int c = 0; c < 6; c++)
+			med[c] = median(t[c], ITER_ROUNDS);
+		printf("%zu\t%ld\t%.5f\t%.4f\t%.2f\t%.3f\t%.2f\t%.2f\n", n,
+		    iters, med[0], med[1], med[5], med[2], med[3], med[4]);
+		fflush(stdout);
+		rc_fft_free(&plan);
+		rc_grid_free(g);
+	}
+	rc_fft_set_threads(0);
+	return 0;
+}
+
 int
 main(int argc, char **argv)
 {
@@ -342,6 +462,8 @@ main(int argc, char **argv)
 		ns = 5;
 	if (getenv("BENCH_QUICK"))
 		ns = 2;
+	if (getenv("BENCH_ITER_ONLY"))	/* only the one-thread rows */
+		return iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3);
 	printf("# gfmd-solve solvers, %d threads, p* = 0.05, H = 0.8, lambda_r = L/2,"
 	    " lambda_s = L/64\n", threads);
 	printf("n\tboundary\tmethod\titerations\tfft_pairs\tpairs_per_iter\t"
@@ -357,5 +479,5 @@ main(int argc, char **argv)
 			return 1;
 		rc_grid_free(g);
 	}
-	return contention();
+	return contention() || iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3);
 }

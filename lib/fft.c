@@ -84,6 +84,32 @@ rc_fft_effort_auto(size_t nx, size_t ny, double pairs)
 	return pairs >= RC_FFT_MEASURE_PAIRS ? RC_FFT_MEASURE : RC_FFT_WISDOM;
 }
 
+double
+rc_fft_plan_limit(size_t nx, size_t ny, double pairs)
+{
+	rc_fft f;
+	rc_err err;
+	double t0, pair;
+
+	if (rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, &err) != 0)
+		return -1;
+	/* The first pair touches the buffers' pages: time the second. */
+	rc_fft_forward(&f);
+	rc_fft_backward(&f);
+	t0 = rc_clock();
+	rc_fft_forward(&f);
+	rc_fft_backward(&f);
+	pair = rc_clock() - t0;
+	rc_fft_free(&f);
+	return RC_FFT_PLAN_SHARE * pairs * pair / RC_FFT_PLAN_CALLS;
+}
+
+void
+rc_fft_set_plan_limit(double seconds)
+{
+	fftw_set_timelimit(seconds >= 0 ? seconds : FFTW_NO_TIMELIMIT);
+}
+
 static unsigned
 effort_flags(enum rc_fft_effort e)
 {
@@ -103,21 +129,58 @@ int
 rc_fft_wisdom_import(const char *path, rc_err *err)
 {
 	FILE *fp;
-	int ok, c;
+	char *text = NULL, *grown;
+	size_t len = 0, cap = 0, got;
+	int ok;
 
 	if ((fp = fopen(path, "r")) == NULL) {
 		if (errno == ENOENT)
 			return 0;
 		return rc_seterr(err, "%s", strerror(errno));
 	}
+	/* Read it whole, at most RC_FFT_WISDOM_MAX_BYTES of text: FFTW's own
+	 * reader reads until its closing parenthesis, which a device such as
+	 * /dev/zero never gives (it read forever). */
+	do {
+		if (len + 1 >= cap) {
+			cap = cap ? 2 * cap : 65536;
+			if (cap > RC_FFT_WISDOM_MAX_BYTES + 1)
+				cap = RC_FFT_WISDOM_MAX_BYTES + 1;
+			if (len + 1 >= cap) {
+				free(text);
+				fclose(fp);
+				return rc_seterr(err, "not FFTW wisdom (%d MiB or more)",
+				    RC_FFT_WISDOM_MAX_BYTES >> 20);
+			}
+			if ((grown = realloc(text, cap)) == NULL) {
+				free(text);
+				fclose(fp);
+				return rc_seterr(err, "out of memory");
+			}
+			text = grown;
+		}
+		got = fread(text + len, 1, cap - 1 - len, fp);
+		if (memchr(text + len, '\0', got) != NULL) {
+			free(text);
+			fclose(fp);
+			return rc_seterr(err, "not FFTW wisdom (binary data)");
+		}
+		len += got;
+	} while (got > 0);
+	ok = !ferror(fp);
+	fclose(fp);
+	if (!ok) {
+		free(text);
+		return rc_seterr(err, "read error");
+	}
 	/* Empty (a new file, /dev/null): no wisdom yet, like a missing one. */
-	if ((c = getc(fp)) == EOF) {
-		fclose(fp);
+	if (len == 0) {
+		free(text);
 		return 0;
 	}
-	ungetc(c, fp);
-	ok = fftw_import_wisdom_from_file(fp);
-	fclose(fp);
+	text[len] = '\0';
+	ok = fftw_import_wisdom_from_string(text);
+	free(text);
 	if (!ok)
 		return rc_seterr(err, "not FFTW wisdom (or from another FFTW "
 		    "version); remove it or name another file");

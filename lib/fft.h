@@ -29,18 +29,35 @@ enum rc_fft_effort {
 };
 
 /* Effort policy, from timings of an r2c + c2r pair on this project's
- * 2-core test machine (roughcontact(7), "Running large problems"): MEASURE
- * planning costs 1 to 22 s at 512^2 .. 4096^2 (15 to 700 pairs); the plans
- * it finds are no faster than ESTIMATE's at 512^2 and 1024^2 (within the
- * noise, 5%), 15-17% faster at 2048^2 and 28% at 4096^2.  So: ESTIMATE
- * below RC_FFT_MEASURE_POINTS (1024^2, where a solver's thousands of
- * transforms make a few seconds of planning negligible, and where other
- * CPUs may gain more); above, MEASURE when the caller expects at least
- * RC_FFT_MEASURE_PAIRS transform pairs (a solver), else RC_FFT_WISDOM (a
- * plan from wisdom, which costs nothing to make, or ESTIMATE). */
+ * 2-core test machine: the plans MEASURE finds are no faster than
+ * ESTIMATE's at 512^2 (within the noise, 5%), 0-25% faster at 1024^2,
+ * 8-17% at 2048^2 and 28% at 4096^2; MEASURE planning costs 1 to 22 s at
+ * 512^2 .. 4096^2 (roughcontact(7), "Running large problems"; on the
+ * loaded machine of issue 29, in units of the ESTIMATE pair: 166-233
+ * pairs at 1024^2 and 31-47 at 2048^2 for the pair, 55-76 and 7-11 more
+ * for the blocked convolution's plans).  So planning pays only for long
+ * work: ESTIMATE below RC_FFT_MEASURE_POINTS; above, MEASURE when the
+ * caller expects at least RC_FFT_MEASURE_PAIRS transform pairs (many
+ * pressures of a solver), else RC_FFT_WISDOM (a plan from wisdom, which
+ * costs nothing to make, or ESTIMATE).  A solve of one pressure (50-300
+ * pairs) is planned with ESTIMATE. */
 #define RC_FFT_MEASURE_POINTS ((size_t)1024 * 1024)
-#define RC_FFT_MEASURE_PAIRS 200.0
+#define RC_FFT_MEASURE_PAIRS 2000.0
 enum rc_fft_effort rc_fft_effort_auto(size_t nx, size_t ny, double pairs);
+/* A bound on FFTW's planning for work of `pairs` transform pairs of nx x
+ * ny: RC_FFT_PLAN_SHARE of the work's time, from one pair of ESTIMATE
+ * plans timed here (buffers of the grid's size for that moment), shared
+ * among the RC_FFT_PLAN_CALLS planner calls of a solver (the pair, the
+ * blocked convolution's row and column plans and their rests), each of
+ * which FFTW then stops at its time limit with the best plan so far.
+ * Returns the limit per call in seconds, or a negative number if it could
+ * not time a pair (no limit then).  rc_fft_set_plan_limit sets FFTW's
+ * time limit for the plans made after (FFTW's process-wide state, as its
+ * thread count and wisdom); seconds < 0: none. */
+#define RC_FFT_PLAN_SHARE 0.1
+#define RC_FFT_PLAN_CALLS 10
+double rc_fft_plan_limit(size_t nx, size_t ny, double pairs);
+void rc_fft_set_plan_limit(double seconds);
 /* "estimate", "measure", "patient", "wisdom"; parse returns -1 if unknown. */
 const char *rc_fft_effort_name(enum rc_fft_effort e);
 int rc_fft_effort_parse(const char *name);
@@ -70,8 +87,11 @@ int rc_fft_set_threads(int n);
  * not this library's: loading it makes later MEASURE plans of the same
  * sizes and thread counts instant.  Import: 1 if loaded, 0 if path does
  * not exist or is empty (nothing to load yet), -1 if it cannot be read or
- * is not FFTW wisdom.  Export writes all wisdom atomically (temporary file + rename),
- * so concurrent runs sharing one file never see a torn one. */
+ * is not FFTW wisdom: text with a NUL byte, or RC_FFT_WISDOM_MAX_BYTES
+ * or more (so a device such as /dev/zero is refused, not read forever).
+ * Export writes all wisdom atomically (temporary file + rename), so
+ * concurrent runs sharing one file never see a torn one. */
+#define RC_FFT_WISDOM_MAX_BYTES (16 << 20)
 int rc_fft_wisdom_import(const char *path, rc_err *err);
 int rc_fft_wisdom_export(const char *path, rc_err *err);
 

@@ -487,6 +487,13 @@ rc_solver_plastic_fraction(const rc_solver *s)
 	return (double)at / (double)s->n;
 }
 
+rc_fft *
+rc_solver_fft(rc_solver *s)
+{
+	return s->free_bc || s->el.dist != NULL || s->el.fft.real == NULL ?
+	    NULL : &s->el.fft;
+}
+
 size_t
 rc_solver_bytes(const rc_solver *s)
 {

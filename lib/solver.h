@@ -197,5 +197,11 @@ double rc_solver_adhesive_pressure(const rc_solver *s);
 double rc_solver_attractive_fraction(const rc_solver *s);
 /* Bytes the solver holds (for the memory report). */
 size_t rc_solver_bytes(const rc_solver *s);
+/* The periodic solver's FFT plans (NULL on free boundaries), which a
+ * caller may use between solves: their buffers are the solver's scratch
+ * and hold nothing a later solve reads (gfmd-solve's contact analysis
+ * shares them instead of planning and allocating its own).  NULL on free
+ * boundaries and for a distributed operator. */
+rc_fft *rc_solver_fft(rc_solver *s);
 
 #endif

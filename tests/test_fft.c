@@ -41,6 +41,12 @@ test_policy(void)
 	    "2^20 points, %g pairs: measure", RC_FFT_MEASURE_PAIRS);
 	test_int(rc_fft_effort_auto(2048, 2048, 5), RC_FFT_WISDOM,
 	    "a one-shot big transform: wisdom or estimate");
+	/* gfmd-solve's one pressure, about 200 pairs: its measured plans
+	 * cost more than the solve (issue 29). */
+	test_int(rc_fft_effort_auto(1024, 1024, 200), RC_FFT_WISDOM,
+	    "one pressure at 1024^2: no measuring");
+	test_int(rc_fft_effort_auto(4096, 4096, 200), RC_FFT_WISDOM,
+	    "one pressure at 4096^2: no measuring");
 	for (int e = RC_FFT_ESTIMATE; e <= RC_FFT_WISDOM; e++)
 		test_int(rc_fft_effort_parse(rc_fft_effort_name((enum rc_fft_effort)e)),
 		    e, "effort name round trip %d", e);
@@ -83,6 +89,45 @@ test_wisdom(void)
 	test_int(rc_fft_wisdom_import(bad, &err), -1, "not wisdom: an error");
 	test_true(strstr(err.msg, "not FFTW wisdom") != NULL, "message: %s", err.msg);
 	test_int(rc_fft_wisdom_export(missing, &err), -1, "export into no directory");
+	/* A device that never ends was read forever (issue 27). */
+	test_int(rc_fft_wisdom_import("/dev/zero", &err), -1, "/dev/zero: refused");
+	test_true(strstr(err.msg, "not FFTW wisdom") != NULL, "message: %s", err.msg);
+	test_int(rc_fft_wisdom_import("/dev/null", &err), 0, "/dev/null: nothing yet");
+	fftw_forget_wisdom();
+}
+
+/* A plan made under FFTW's time limit is still the transform: with a
+ * limit of a microsecond, MEASURE stops at once with some plan, whose
+ * round trip gives N x to round-off (1e-12 of N for O(1) values); the
+ * limit for the work grows with the work. */
+static void
+test_plan_limit(void)
+{
+	size_t n = 48, k;
+	double l1, l2, worst = 0;
+	rc_fft f;
+	rc_err err;
+
+	l1 = rc_fft_plan_limit(n, n, 1000);
+	l2 = rc_fft_plan_limit(n, n, 1e6);
+	test_true(l1 > 0 && l2 > l1, "limits %g s for 1e3 pairs, %g for 1e6", l1, l2);
+	fftw_forget_wisdom();
+	rc_fft_set_plan_limit(1e-6);
+	test_int(rc_fft_init(&f, n, n, RC_FFT_MEASURE, &err), 0, "plan (limited)");
+	rc_fft_set_plan_limit(-1);
+	for (k = 0; k < n * n; k++)
+		f.real[k] = sin(0.37 * (double)k) + 0.25 * (double)(k % 7);
+	rc_fft_forward(&f);
+	rc_fft_backward(&f);
+	for (k = 0; k < n * n; k++) {
+		double want = (double)(n * n) * (sin(0.37 * (double)k) +
+		    0.25 * (double)(k % 7));
+
+		worst = fmax(worst, fabs(f.real[k] - want));
+	}
+	test_true(worst <= 1e-12 * (double)(n * n), "limited plan: round trip "
+	    "within %g", worst);
+	rc_fft_free(&f);
 	fftw_forget_wisdom();
 }
 
@@ -194,6 +239,7 @@ main(void)
 	test_threads();
 	test_policy();
 	test_wisdom();
+	test_plan_limit();
 	test_inplace();
 	test_blocked();
 	return test_summary();

@@ -511,6 +511,8 @@ tool_fft_effort(struct tool *t, size_t nx, size_t ny, double pairs)
 	else if ((e = rc_fft_effort_auto(nx, ny, pairs)) == RC_FFT_WISDOM &&
 	    t->wisdom != NULL)
 		e = RC_FFT_MEASURE;
+	else if (e == RC_FFT_MEASURE)	/* the policy's: planning bounded */
+		rc_fft_set_plan_limit(rc_fft_plan_limit(nx, ny, pairs));
 	if (e == RC_FFT_MEASURE || e == RC_FFT_PATIENT)
 		t->fft_measured = 1;
 	return e;

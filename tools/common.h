@@ -142,7 +142,8 @@ void tool_fft_setup(struct tool *t);
 /* The effort for a plan of nx x ny that will run about `pairs` transform
  * pairs: --fft-effort if given; else rc_fft_effort_auto, except that a
  * one-shot plan of a big grid is measured when a wisdom file is in use
- * (the first run pays, later runs load it). */
+ * (the first run pays, later runs load it).  When the policy picks
+ * MEASURE, the planning is bounded (rc_fft_plan_limit). */
 enum rc_fft_effort tool_fft_effort(struct tool *t, size_t nx, size_t ny,
     double pairs);
 /* Save the wisdom atomically if a file is in use and a plan was measured;

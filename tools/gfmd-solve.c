@@ -220,7 +220,9 @@ usage(void)
 "  -j N                 threads (default OMP_NUM_THREADS, else 1 under\n"
 "                       make -j, else all cores)\n"
 "  --fft-effort E       estimate, measure or patient FFT planning (default:\n"
-"                       measure for 1024^2 points and more, else estimate)\n"
+"                       measure, time-bounded, for 1024^2 points and more\n"
+"                       and 10 pressures or 2 approaches and more, else\n"
+"                       estimate)\n"
 "  --wisdom FILE        load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
 "  -q                   no progress display\n"
 "  -L LX[xLY]           cell size of an input that carries none\n"
@@ -270,6 +272,7 @@ struct run {
 	rc_grid *h;			/* the indenter */
 	double gbar;			/* its rms gradient */
 	rc_fft fft;			/* the analysis plan (spectral gbar_c) */
+	rc_fft *ana;			/* it, or the solver's when alike */
 	rc_solver *solver;
 	double plan_seconds;
 	double l_adh_dx;		/* adhesion: l_adh / dx; 0: none */
@@ -509,11 +512,19 @@ indenter_setup(struct run *r)
 		    name);
 }
 
+/* The work ahead of the FFT plans, for the planning effort (fft.h): the
+ * transform pairs of one row, 2 a FIRE iteration (38-149 iterations at
+ * p* = 0.05 on 512^2-1024^2 surfaces, measured), and the solves of one
+ * approach (a bracket, then its refinement: assumed, not measured). */
+#define GFMD_PAIRS_PER_ROW		200.0
+#define GFMD_SOLVES_PER_APPROACH	5.0
+
 /* The solver, planned and timed, started from --init or the checkpoint. */
 static void
 solver_setup(struct run *r)
 {
 	struct gfmd_opts *o = &r->o;
+	rc_fft *sf;
 	rc_err err;
 
 	o->so.modulus = o->modulus;
@@ -524,13 +535,24 @@ solver_setup(struct run *r)
 		o->so.progress = show_progress;
 		o->so.progress_ctx = &r->pr;
 	}
-	/* A solve runs hundreds of transform pairs: worth MEASURE on big grids. */
-	o->so.fft_effort = tool_fft_effort(&r->t, r->h->nx, r->h->ny, 1e4);
+	/* The work ahead: GFMD_PAIRS_PER_ROW transform pairs a row. */
+	o->so.fft_effort = tool_fft_effort(&r->t, r->h->nx, r->h->ny,
+	    GFMD_PAIRS_PER_ROW * (o->napproach ? GFMD_SOLVES_PER_APPROACH : 1) *
+	    (double)r->npressures);
 	r->plan_seconds = rc_clock();
 	if ((r->solver = rc_solver_new(r->h, &o->so, &err)) == NULL)
 		tool_fail(&r->t, "%s", err.msg);
 	tool_fft_finish(&r->t);
 	r->plan_seconds = rc_clock() - r->plan_seconds;
+	/* The analysis on the solver's plans when they are made alike (the
+	 * same transforms bit for bit): one set of buffers, not two. */
+	r->ana = &r->fft;
+	if (r->fft.real != NULL && (sf = rc_solver_fft(r->solver)) != NULL &&
+	    sf->nx == r->fft.nx && sf->ny == r->fft.ny &&
+	    sf->effort == r->fft.effort) {
+		rc_fft_free(&r->fft);
+		r->ana = sf;
+	}
 	if (o->init != NULL) {
 		rc_grid *u = tool_read_grid(&r->t, o->init);
 
@@ -575,7 +597,7 @@ output_begin(struct run *r)
 	r->co.alpha = o->alpha;
 	r->co.modulus = o->modulus;
 	r->co.gbar = r->gbar;
-	r->co.fft = o->fd || o->so.boundary == RC_BOUNDARY_FREE ? NULL : &r->fft;
+	r->co.fft = o->fd || o->so.boundary == RC_BOUNDARY_FREE ? NULL : r->ana;
 	r->co.fd = o->fd;
 	r->co.nonperiodic = o->so.boundary == RC_BOUNDARY_FREE;
 	for (size_t k = 0; k < r->first; k++) {

@@ -42,4 +42,14 @@ check_status "--wisdom -: usage" 2 surfgen -n 8 --wisdom - -o x.txt
 # a missing wisdom file is created only when something was measured
 check_status "estimate with --wisdom" 0 surfgen -q -n 64 --wisdom new.wis -o x.txt
 check "no measured plan, no wisdom file" test ! -e new.wis
+# a device that never ends (it was read forever): refused, any tool
+for dev in /dev/zero /dev/full; do
+	[ -r "$dev" ] || { skip 1 "$dev not readable"; continue; }
+	check_status "--wisdom $dev is refused" 1 timeout 60 surfgen -q -n 8 \
+	    --wisdom "$dev" -o x.txt
+	check_status "RC_WISDOM=$dev is refused" 1 env RC_WISDOM="$dev" \
+	    timeout 60 surfstat -q -o x.tsv m.txt
+done
+check_status "--wisdom /dev/null: no wisdom yet, like an empty file" 0 \
+    surfgen -q -n 8 --wisdom /dev/null -o x.txt
 summary
