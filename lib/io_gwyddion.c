@@ -79,15 +79,25 @@ detached_format(const unsigned char *p, size_t n)
 	size_t h = n < RC_HEADER_MAX ? n : RC_HEADER_MAX;
 
 	if (n >= 4 && memcmp(p, "NRRD", 4) == 0) {
-		/* The header ends at the first empty line. */
-		for (size_t k = 0; k + 1 < h; k++)
-			if (p[k] == '\n' && (p[k + 1] == '\n' || (p[k + 1] == '\r' &&
-			    k + 2 < h && p[k + 2] == '\n'))) {
-				h = k + 1;
+		/* Any header line (up to the first empty one) whose key, blanks
+		 * and case aside, is "datafile". */
+		for (size_t k = 0; k < h; ) {
+			size_t e = k, m = 0;
+			char key[16];
+
+			while (e < h && p[e] != '\n')
+				e++;
+			if (e == k || (e == k + 1 && p[k] == '\r'))
 				break;
-			}
-		if (has(p, h, "\ndata file:") || has(p, h, "\ndatafile:"))
-			return "NRRD with a detached data file ('data file:')";
+			for (size_t j = k; j < e && p[j] != ':' && m < sizeof(key) - 1;
+			    j++)
+				if (p[j] != ' ' && p[j] != '\t')
+					key[m++] = (char)p[j];
+			key[m] = '\0';
+			if (strcasecmp(key, "datafile") == 0)
+				return "NRRD with a detached data file ('data file:')";
+			k = e + 1;
+		}
 		return NULL;
 	}
 	if (has(p, h, "ExternalDataFileName"))

@@ -24,10 +24,12 @@ detached /etc/passwd > passwd.nrrd
 # The same as text (no NUL): it reached Gwyddion only through the text
 # reader's refusal.
 detached /etc/passwd | tr -d '\000' > passwd-text.nrrd
+# Gwyddion also takes the key in other case and spacing.
+detached /etc/passwd | sed 's/^data file:/Data File :/' > spaced.nrrd
 mkfifo fifo
 detached "$T_TMP/fifo" > fifo.nrrd
 printf 'NRRD0004\ntype: double\ndimension: 2\nsizes: 100000 100000\nencoding: raw\ndatafile: /dev/zero\n\n\0' > zero.nrrd
-for f in passwd.nrrd passwd-text.nrrd fifo.nrrd zero.nrrd; do
+for f in passwd.nrrd passwd-text.nrrd spaced.nrrd fifo.nrrd zero.nrrd; do
 	rm -f out.txt
 	check_status "$f: refused" 1 surfwarp -q "$f" -o out.txt
 	check "$f: the message says why" grep -q "detached data file" "$T_TMP/stderr"
