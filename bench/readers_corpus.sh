@@ -10,7 +10,8 @@
 #   file channel right | wrong FIELD(ours!=theirs)... | refused REASON
 # then per format (file extension) the counts right, wrong, refused.
 # A channel whose values are not lengths (deg, V, none) is read with
-# --z-unit m so that its rms is computed in its own unit.  Sizes compare
+# --z-unit m so that its rms is computed in its own unit; our z_unit "1"
+# (unitless) matches the manifest's empty one.  Sizes compare
 # exactly, lengths and rms (in double precision)  to a relative 1e-6.
 #   RC_BIN=bin sh bench/readers_corpus.sh DIR MANIFEST
 set -u
