@@ -100,21 +100,19 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 {
 	unsigned char *buf = NULL;
 	size_t len = 0;
-	struct stat st;
 	rc_err gerr, terr;
 	rc_in *in2 = NULL;
 	rc_grid *g = NULL;
 	FILE *fp = NULL;
-	int is_file = path != NULL && stat(path, &st) == 0 && S_ISREG(st.st_mode);
 
-	if (!is_file && rc__in_slurp(in, &buf, &len, err) != 0)
+	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
-	if (rc__gwyddion_read(is_file ? path : NULL, buf, len, s, &gerr) == 0) {
+	if (rc__gwyddion_read(path, buf, len, s, &gerr) == 0) {
 		free(buf);
 		return 0;
 	}
 	rc__chanset_free(s);
-	fp = is_file ? fopen(path, "rb") : fmemopen(buf, len, "rb");
+	fp = fmemopen(buf, len, "rb");
 	if (fp != NULL && (in2 = rc_malloc(sizeof(*in2), &terr)) != NULL) {
 		rc__in_init(in2, fp);
 		g = rc__txt_read(in2, o, &terr);
@@ -126,7 +124,65 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	free(buf);
 	if (g != NULL)
 		return rc__chanset_add(s, g, "", err);
-	return rc_seterr(err, "%s; read as text: %s", gerr.msg, terr.msg);
+	return rc_seterr(err, "not a format of ours; Gwyddion's converter: %s; "
+	    "read as text: %s", gerr.msg, terr.msg);
+}
+
+/* Does the text at path open with a header, a line that is no number
+ * (after blank lines and '#' comments)?  Only such text can be the header
+ * of an instrument format; numbers the text reader refused are a matrix
+ * with a fault, which its message locates. */
+static int
+opens_with_header(const char *path)
+{
+	char line[256];
+	FILE *fp = fopen(path, "rb");
+	int header = 0;
+
+	if (fp == NULL)
+		return 0;
+	while (fgets(line, sizeof(line), fp) != NULL) {
+		const char *p = line + strspn(line, " \t\r\n,;");
+
+		if (*p == '\0' || *p == '#')
+			continue;
+		header = strchr("+-.0123456789", *p) == NULL &&
+		    strncasecmp(p, "nan", 3) != 0 && strncasecmp(p, "inf", 3) != 0;
+		break;
+	}
+	fclose(fp);
+	return header;
+}
+
+/* Text our text reader refused (terr): it may be the text header of an
+ * instrument format (Nanosurf .nid, WSxM .stp), which Gwyddion reads. */
+static int
+text_or_vendor(const char *path, const rc_err *terr, rc_chanset *s,
+    rc_err *err)
+{
+	unsigned char *buf = NULL;
+	size_t len = 0;
+	rc_err gerr;
+	rc_in *in2 = NULL;
+	FILE *fp;
+	int r = -1;
+
+	if ((fp = fopen(path, "rb")) == NULL) {
+		rc_seterr(&gerr, "%s", strerror(errno));
+	} else if ((in2 = rc_malloc(sizeof(*in2), &gerr)) != NULL) {
+		rc__in_init(in2, fp);
+		if (rc__in_slurp(in2, &buf, &len, &gerr) == 0)
+			r = rc__gwyddion_read(path, buf, len, s, &gerr);
+	}
+	free(in2);
+	free(buf);
+	if (fp != NULL)
+		fclose(fp);
+	if (r == 0)
+		return 0;
+	rc__chanset_free(s);
+	return rc_seterr(err, "%s (read as text); Gwyddion's converter: %s",
+	    terr->msg, gerr.msg);
 }
 
 static int read_channels(FILE *fp, const char *path, const rc_read_opts *o,
@@ -173,6 +229,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 	unsigned char *buf = NULL;
 	mem_reader whole = NULL;
 	rc_grid *g = NULL;
+	struct stat st;
 	size_t n, len;
 	int r = -1;
 
@@ -218,8 +275,14 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 	else if (looks_binary(in)) {
 		r = vendor(in, path, o, s, err);
 		goto out;
-	} else
-		g = rc__txt_read(in, o, err);
+	} else if ((g = rc__txt_read(in, o, err)) == NULL && path != NULL &&
+	    stat(path, &st) == 0 && S_ISREG(st.st_mode) &&
+	    opens_with_header(path)) {
+		rc_err terr = *err;
+
+		r = text_or_vendor(path, &terr, s, err);
+		goto out;
+	}
 	if (whole != NULL) {
 		if (rc__in_slurp(in, &buf, &len, err) == 0)
 			r = whole(buf, len, o, s, err);

@@ -12,7 +12,10 @@
  * data (D, row by row)), "/N/mask" (a GwyDataField of 0 and 1) and
  * "/N/data/title" (s).  Every /N/data is a channel, in order of N; a mask
  * marks missing points (Gwyddion marks the invalid points of imported
- * measurements so), which become NaN with valid = 0.  Graphs, spectra,
+ * measurements so), which become NaN with valid = 0.  A channel with a
+ * lateral unit but none for its values holds unitless values (intensity,
+ * colour): its z_unit is "1", which no length reading takes for heights
+ * unless --z-unit says what they are.  Graphs, spectra,
  * volume data and everything else are skipped by their byte counts, so
  * nothing recurses and every length is checked against what is left.
  */
@@ -304,7 +307,8 @@ make_channel(const struct entry *e, rc_chanset *s, rc_err *err)
 	for (size_t k = 0; k < n; k++)
 		g->z[k] = rc__get_le64(f->data + 8 * k);
 	strcpy(g->unit, f->unit_xy);
-	strcpy(g->z_unit, f->unit_z);
+	strcpy(g->z_unit, f->unit_xy[0] != '\0' && f->unit_z[0] == '\0' ? "1" :
+	    f->unit_z);
 	g->periodic = 0;	/* a measurement */
 	if (m->present && m->xres == f->xres && m->yres == f->yres) {
 		if ((g->valid = rc_malloc(n, err)) == NULL) {

@@ -160,10 +160,11 @@ int rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s,
 int rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err);
 rc_grid *rc__sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
-/* Any other format: Gwyddion converts the file at path (or, path NULL,
- * the len bytes at buf, spooled to a temporary file) to .gwy, which
- * rc__gwy_read reads. */
-int rc__gwyddion_read(const char *path, const unsigned char *buf, size_t len,
+/* Any other format: Gwyddion converts the len bytes at buf (spooled to a
+ * file alone in a private temporary directory; name, the file's name or
+ * NULL, gives its extension) to .gwy, which rc__gwy_read reads.  Formats
+ * whose data are in another file are refused (io_gwyddion.c). */
+int rc__gwyddion_read(const char *name, const unsigned char *buf, size_t len,
     rc_chanset *s, rc_err *err);
 int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);

@@ -4,11 +4,18 @@
  *
  * Dimensions x (nx) and y (ny); variable heights(x, y), so the y index
  * runs fastest in the file while our grid runs x fastest (we transpose);
- * optional coordinate variables x(x) and y(y) (pixel centres) whose
- * attributes carry the physical size (length), the unit of lengths and
- * heights (length_unit; one unit for both) and the periodic flag
- * (periodic, non-zero = periodic; absent = not periodic).  Missing points
- * are NaN (or the heights' _FillValue).  We write the classic 64-bit
+ * heights(x) alone is a line scan (an nx x 1 grid, ly one spacing).
+ * Optional coordinate variables x(x) and y(y) (pixel centres) whose
+ * attributes carry the physical size (length), the unit (unit, which
+ * SurfaceTopography writes and reads on x, y and heights; length_unit, of
+ * older files, when unit is absent; one unit for lengths and heights) and
+ * the periodic flag (periodic, non-zero = periodic; absent = not
+ * periodic).  Missing points: NaN, the heights' _FillValue or
+ * missing_value, netCDF's default fill of the type when there is no
+ * _FillValue (points never written: 9.97e36 for double), and the points
+ * where SurfaceTopography's variable mask (same dimensions) is non-zero.
+ * We write unit and length_unit, NaN and mask = 1 at missing points.  We
+ * write the classic 64-bit
  * offset format that SurfaceTopography's default writer (scipy) writes
  * and reads; we read any netCDF the library opens (also netCDF-4).
  * Heights are written as stored: when the grid's height unit differs from
@@ -43,7 +50,7 @@
 	X(open_mem) X(inq_varid) X(inq_var) X(inq_vardimid) X(inq_dimlen) \
 	X(get_var_double) X(close) X(create_mem) X(def_dim) X(def_var) \
 	X(put_att_double) X(put_att_int) X(put_att_text) X(_enddef) \
-	X(put_var_double) X(close_memio) X(abort)
+	X(put_var_double) X(close_memio) X(abort) X(put_var_uchar)
 
 struct ncapi {
 	void *handle;
@@ -199,12 +206,14 @@ h_atts(struct hcur *c)
 	return 0;
 }
 
+/* *htype: the type of the variable named heights (0 if none). */
 static int
-classic_header_ok(const unsigned char *buf, size_t len)
+classic_header_ok(const unsigned char *buf, size_t len, uint32_t *htype)
 {
 	struct hcur c = { buf + 4, buf + len, buf[3] == 5 };
 	uint32_t tag, type;
 	uint64_t n, m, v;
+	const unsigned char *name;
 
 	if (h_count(&c, &v) != 0)	/* numrecs */
 		return 0;
@@ -223,14 +232,37 @@ classic_header_ok(const unsigned char *buf, size_t len)
 	    (tag != 0x0B && !(tag == 0 && n == 0)) ||
 	    n > (uint64_t)(c.end - c.p) / 4)
 		return 0;
+	*htype = 0;
 	for (uint64_t k = 0; k < n; k++) {
+		name = c.p;
 		if (h_name(&c) != 0 || h_count(&c, &m) != 0 ||
 		    h_skip(&c, m, c.wide ? 8 : 4) != 0 || h_atts(&c) != 0 ||
 		    h_u32(&c, &type) != 0 || h_count(&c, &v) != 0 ||
 		    h_skip(&c, 1, buf[3] == 1 ? 4 : 8) != 0)
 			return 0;
+		/* the name: its count (4 or 8 bytes), then its bytes */
+		if (memcmp(name + (c.wide ? 4 : 0), "\0\0\0\7heights", 11) == 0)
+			*htype = type;
 	}
 	return 1;
+}
+
+/* The value netCDF gives a point never written in a variable of type t
+ * without _FillValue (NaN for types whose default fill is no marker:
+ * bytes, by netCDF's convention, and 64-bit integers, which a double
+ * would not hold exactly). */
+static double
+default_fill(nc_type t)
+{
+	switch (t) {
+	case NC_DOUBLE: return NC_FILL_DOUBLE;
+	case NC_FLOAT: return NC_FILL_FLOAT;
+	case NC_INT: return NC_FILL_INT;
+	case NC_SHORT: return NC_FILL_SHORT;
+	case NC_UINT: return NC_FILL_UINT;
+	case NC_USHORT: return NC_FILL_USHORT;
+	default: return NAN;
+	}
 }
 
 /* Long: the netCDF variables and attributes in the order the library
@@ -239,12 +271,13 @@ int
 rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err)
 {
-	int nc, hv, xv = -1, yv = -1, ndims, dims[2], st, r = -1;
+	int nc, hv, xv = -1, yv = -1, mv, ndims, dims[2], st, r = -1;
 	size_t nx, ny, n;
-	double lx = 1, ly = 1, per = 0, fill, *t = NULL;
-	char unit[64] = "";
+	double lx = 1, ly = 1, per = 0, fill, missing, *t = NULL;
+	char unit[64] = "", zunit[64] = "";
 	int classic = len >= 3 && memcmp(buf, "CDF", 3) == 0;
 	nc_type type;
+	uint32_t htype = 0;
 	rc_grid *g = NULL;
 	struct ncapi lib, *api = &lib;
 
@@ -252,9 +285,14 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		lx = o->lx;
 		ly = o->ly;
 	}
-	if (classic && (len < 4 || !classic_header_ok(buf, len)))
+	if (classic && (len < 4 || !classic_header_ok(buf, len, &htype)))
 		return rc_seterr(err, "not a readable netCDF file: corrupt or "
 		    "truncated header");
+	/* Before libnetcdf, which refuses some such files with a bare
+	 * "Operation not permitted". */
+	if (classic && htype == NC_CHAR)
+		return rc_seterr(err, "netCDF: heights holds characters, not "
+		    "numbers");
 	if (ncapi_open(api, err) != 0)
 		return -1;
 	if ((st = api->open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
@@ -270,18 +308,26 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	}
 	if ((st = api->inq_var(nc, hv, NULL, &type, &ndims, NULL, NULL)) != NC_NOERR)
 		goto nc;
-	if (ndims != 2) {
-		rc_seterr(err, "netCDF: heights has %d dimensions, not 2", ndims);
-		goto out;
-	}
 	if (type == NC_CHAR || type == NC_STRING || type >= NC_VLEN) {
-		rc_seterr(err, "netCDF: heights is not numeric");
+		rc_seterr(err, "netCDF: heights holds %s, not numbers",
+		    type == NC_CHAR ? "characters" : type == NC_STRING ? "strings" :
+		    "a user-defined type");
 		goto out;
 	}
+	if (ndims != 1 && ndims != 2) {
+		rc_seterr(err, "netCDF: heights has %d dimensions, not 2 (a map) "
+		    "or 1 (a line scan)", ndims);
+		goto out;
+	}
+	ny = 1;
 	if ((st = api->inq_vardimid(nc, hv, dims)) != NC_NOERR ||
 	    (st = api->inq_dimlen(nc, dims[0], &nx)) != NC_NOERR ||
-	    (st = api->inq_dimlen(nc, dims[1], &ny)) != NC_NOERR)
+	    (ndims == 2 && (st = api->inq_dimlen(nc, dims[1], &ny)) != NC_NOERR))
 		goto nc;
+	if (nx == 0 || ny == 0) {
+		rc_seterr(err, "netCDF: heights has no points (%zu x %zu)", nx, ny);
+		goto out;
+	}
 	if (rc_grid_check_shape(nx, ny, 1, 1, err) != 0)
 		goto out;
 	n = nx * ny;
@@ -294,29 +340,57 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		goto out;
 	}
 	if (api->inq_varid(nc, "x", &xv) == NC_NOERR) {
-		att_double(api, nc, xv, "length", &lx);
+		if (att_double(api, nc, xv, "length", &lx) == 0 && ndims == 1)
+			ly = lx / (double)nx;
 		att_double(api, nc, xv, "periodic", &per);
-		att_text(api, nc, xv, "length_unit", unit, sizeof(unit));
+		if (att_text(api, nc, xv, "unit", unit, sizeof(unit)) != 0)
+			att_text(api, nc, xv, "length_unit", unit, sizeof(unit));
 	}
-	if (api->inq_varid(nc, "y", &yv) == NC_NOERR)
+	if (ndims == 2 && api->inq_varid(nc, "y", &yv) == NC_NOERR)
 		att_double(api, nc, yv, "length", &ly);
+	if (att_text(api, nc, hv, "unit", zunit, sizeof(zunit)) != 0)
+		strcpy(zunit, unit);
 	if ((t = rc_malloc(n * sizeof(double), err)) == NULL)
 		goto out;
 	if ((st = api->get_var_double(nc, hv, t)) != NC_NOERR)
 		goto nc;
 	if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 		goto out;
-	if (unit[0] != '\0' && (rc__io_set_unit(g->unit, unit, err) != 0 ||
-	    rc__io_set_unit(g->z_unit, unit, err) != 0))
+	if ((unit[0] != '\0' && rc__io_set_unit(g->unit, unit, err) != 0) ||
+	    (zunit[0] != '\0' && rc__io_set_unit(g->z_unit, zunit, err) != 0))
 		goto out;
 	g->periodic = per != 0;
 	for (size_t i = 0; i < nx; i++)
 		for (size_t j = 0; j < ny; j++)
 			g->z[j * nx + i] = t[i * ny + j];
 	if (att_double(api, nc, hv, "_FillValue", &fill) != 0)
-		fill = NAN;
+		fill = default_fill(type);
+	if (att_double(api, nc, hv, "missing_value", &missing) != 0)
+		missing = NAN;
+	/* SurfaceTopography's mask: non-zero where a point is missing. */
+	if (api->inq_varid(nc, "mask", &mv) == NC_NOERR) {
+		int mdims[2], mnd;
+
+		if ((st = api->inq_var(nc, mv, NULL, NULL, &mnd, mdims, NULL)) !=
+		    NC_NOERR)
+			goto nc;
+		if (mnd != ndims || mdims[0] != dims[0] ||
+		    (ndims == 2 && mdims[1] != dims[1])) {
+			rc_seterr(err, "netCDF: mask does not have the dimensions of "
+			    "heights");
+			goto out;
+		}
+		if ((st = api->get_var_double(nc, mv, t)) != NC_NOERR) {
+			nc_fail(api, err, "mask", st);
+			goto out;
+		}
+		for (size_t i = 0; i < nx; i++)
+			for (size_t j = 0; j < ny; j++)
+				if (t[i * ny + j] != 0)
+					g->z[j * nx + i] = NAN;
+	}
 	for (size_t k = 0; k < n; k++)
-		if (isnan(g->z[k]) || g->z[k] == fill) {
+		if (isnan(g->z[k]) || g->z[k] == fill || g->z[k] == missing) {
 			if (g->valid == NULL) {
 				if ((g->valid = rc_malloc(n, err)) == NULL)
 					goto out;
@@ -344,7 +418,9 @@ int
 rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 {
 	size_t nx = g->nx, ny = g->ny, n = nx * ny;
-	int nc, dx, dy, xv, yv, hv, dims[2], st, per = g->periodic ? 1 : 0;
+	int nc, dx, dy = -1, xv, yv = -1, hv, mv = -1, dims[2], st, nd;
+	int per = g->periodic ? 1 : 0;
+	size_t missing = 0;
 	double lx = g->lx, ly = g->ly, *t = NULL;
 	const char *unit = g->unit;
 	NC_memio mem = { 0, NULL, 0 };
@@ -382,16 +458,24 @@ rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		return -1;
 	}
 	open = 1;
+	/* A line scan (ny = 1) in SurfaceTopography's 1D layout. */
+	nd = ny == 1 ? 1 : 2;
 	if ((st = api->def_dim(nc, "x", nx, &dx)) != NC_NOERR ||
-	    (st = api->def_dim(nc, "y", ny, &dy)) != NC_NOERR ||
+	    (nd == 2 && (st = api->def_dim(nc, "y", ny, &dy)) != NC_NOERR) ||
 	    (st = api->def_var(nc, "x", NC_DOUBLE, 1, &dx, &xv)) != NC_NOERR ||
-	    (st = api->def_var(nc, "y", NC_DOUBLE, 1, &dy, &yv)) != NC_NOERR)
+	    (nd == 2 && (st = api->def_var(nc, "y", NC_DOUBLE, 1, &dy, &yv)) !=
+	    NC_NOERR))
 		goto nc;
 	dims[0] = dx;
 	dims[1] = dy;
-	if ((st = api->def_var(nc, "heights", NC_DOUBLE, 2, dims, &hv)) != NC_NOERR)
+	if ((st = api->def_var(nc, "heights", NC_DOUBLE, nd, dims, &hv)) != NC_NOERR)
 		goto nc;
-	for (int k = 0; k < 2; k++) {
+	for (size_t k = 0; g->valid != NULL && k < n; k++)
+		missing += !g->valid[k];
+	if (missing > 0 && (st = api->def_var(nc, "mask", NC_BYTE, nd, dims, &mv))
+	    != NC_NOERR)
+		goto nc;
+	for (int k = 0; k < nd; k++) {
 		int v = k ? yv : xv;
 		double l = k ? ly : lx;
 
@@ -399,10 +483,15 @@ rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		    NC_NOERR || (st = api->put_att_int(nc, v, "periodic", NC_INT, 1,
 		    &per)) != NC_NOERR)
 			goto nc;
-		if (unit[0] != '\0' && (st = api->put_att_text(nc, v, "length_unit",
-		    strlen(unit), unit)) != NC_NOERR)
+		/* unit for SurfaceTopography, length_unit for older readers */
+		if (unit[0] != '\0' && ((st = api->put_att_text(nc, v, "unit",
+		    strlen(unit), unit)) != NC_NOERR || (st = api->put_att_text(nc,
+		    v, "length_unit", strlen(unit), unit)) != NC_NOERR))
 			goto nc;
 	}
+	if (unit[0] != '\0' && (st = api->put_att_text(nc, hv, "unit",
+	    strlen(unit), unit)) != NC_NOERR)
+		goto nc;
 	/* No free space after the header or between variables (libnetcdf's
 	 * default reserves some, which its in-memory file leaves
 	 * uninitialised: the output would differ from run to run). */
@@ -412,9 +501,9 @@ rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 		t[i] = ((double)i + 0.5) * lx / (double)nx;
 	if ((st = api->put_var_double(nc, xv, t)) != NC_NOERR)
 		goto nc;
-	for (size_t j = 0; j < ny; j++)
+	for (size_t j = 0; nd == 2 && j < ny; j++)
 		t[j] = ((double)j + 0.5) * ly / (double)ny;
-	if ((st = api->put_var_double(nc, yv, t)) != NC_NOERR)
+	if (nd == 2 && (st = api->put_var_double(nc, yv, t)) != NC_NOERR)
 		goto nc;
 	for (size_t i = 0; i < nx; i++)
 		for (size_t j = 0; j < ny; j++)
@@ -422,6 +511,15 @@ rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err)
 			    g->z[j * nx + i];
 	if ((st = api->put_var_double(nc, hv, t)) != NC_NOERR)
 		goto nc;
+	if (missing > 0) {
+		unsigned char *m = (unsigned char *)t;	/* n bytes of 8n */
+
+		for (size_t i = 0; i < nx; i++)
+			for (size_t j = 0; j < ny; j++)
+				m[i * ny + j] = !g->valid[j * nx + i];
+		if ((st = api->put_var_uchar(nc, mv, m)) != NC_NOERR)
+			goto nc;
+	}
 	open = 0;
 	if ((st = api->close_memio(nc, &mem)) != NC_NOERR)
 		goto nc;

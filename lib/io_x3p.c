@@ -445,6 +445,18 @@ rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 		return -1;
 	}
 	zip_error_fini(&ze);
+	/* A zip that is no x3p: contact.engineering's container of several
+	 * measurements (meta.yml) is told apart. */
+	if (zip_name_locate(za, "main.xml", 0) < 0) {
+		if (zip_name_locate(za, "meta.yml", 0) >= 0)
+			rc_seterr(err, "a zip with meta.yml and no main.xml: a "
+			    "contact.engineering container of several measurements, "
+			    "not an x3p; unzip it and read its measurements one by one");
+		else
+			rc_seterr(err, "a zip without main.xml: not an x3p file "
+			    "(ISO 25178-72)");
+		goto out;
+	}
 	if (read_entry(za, "main.xml", 0, &xml, &xlen, err) != 0)
 		goto out;
 	if (xlen > INT32_MAX || (doc = xmlReadMemory((const char *)xml, (int)xlen,

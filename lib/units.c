@@ -95,6 +95,11 @@ rc_grid_to_common_unit(rc_grid *g, const char *unit, rc_err *err)
 	if (g->unit[0] != '\0' && !rc_unit_length_exp(g->unit, &elat))
 		return rc_seterr(err, "lateral unit '%s' is not a length (want m, mm, "
 		    "um, nm, pm or angstrom)", g->unit);
+	if (lengths && strcmp(g->z_unit, "1") == 0)
+		return rc_seterr(err, "values are unitless (an intensity or colour "
+		    "channel?), not a %s; if they are %ss in a length unit, say "
+		    "which with --z-unit", rc_kind_name(g->kind),
+		    rc_kind_name(g->kind));
 	if (lengths && g->z_unit[0] != '\0' && !rc_unit_length_exp(g->z_unit, &ez))
 		return rc_seterr(err, "values are in '%s', not a length: not a %s; "
 		    "if they are %ss in a length unit, say which with --z-unit",

@@ -7,7 +7,8 @@
 # file; without Gwyddion the message names the package; the netCDF
 # library's ncgen writes a file in the contact.engineering convention
 # that we read, and ncdump shows ours has that convention's layout; the
-# titles of single-channel files (GSF Title, Gwyddion's '# Channel:').
+# titles of single-channel files (GSF Title, Gwyddion's '# Channel:');
+# a contact.engineering container (a zip, no x3p) refused by name.
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
 mkdir -p spool
@@ -174,4 +175,9 @@ check_status "--channel NAME: another title is refused" 1 surfstat --channel Pha
 surfwarp -o titled.surf titled.txt
 check "a .surf converted from the export keeps the title" [ "$(chan titled.surf 1 title)" = Topography ]
 check "a grid without a title lists '-'" [ "$(chan a.surf 1 title)" = - ]
+
+# A zip that is no x3p: contact.engineering's container (meta.yml).
+python3 -c 'import zipfile; z = zipfile.ZipFile("ce.zip", "w"); z.writestr("meta.yml", "datasets: []\n"); z.close()'
+check_status "a contact.engineering container: exit 1" 1 surfstat ce.zip
+check "the message names the container and says to unzip it" grep -q "contact.engineering container.*unzip it" "$T_TMP/stderr"
 summary

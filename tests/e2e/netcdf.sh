@@ -1,0 +1,162 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# netcdf.sh - netCDF in SurfaceTopography's layout (the library behind
+# contact.engineering), files written by the netCDF library's ncgen: the
+# attribute unit on x, y and heights (a 5 nm patch with --unit m is 5e-9
+# m, not 5), length_unit of older files, the mask variable (a masked 999
+# is missing), the 1D line-scan layout, netCDF's default fill (a point
+# never written is missing), character heights refused by name; and what
+# we write carries, by ncdump, what SurfaceTopography reads back: unit on
+# x, y and heights, the periodic flag, the sizes, NaN and mask = 1 at
+# missing points, a line scan in the 1D layout.
+. "$RC_TOP/tests/e2e/lib.sh"
+cd "$T_TMP" || exit 1
+
+if ! command -v ncgen >/dev/null 2>&1 || ! command -v ncdump >/dev/null 2>&1; then
+	skip 25 "ncgen/ncdump not installed (Debian package netcdf-bin)"
+	summary
+	exit 0
+fi
+
+# col FILE NAME: column NAME of the first row of a table
+col_of() {
+	awk -F'\t' -v name="$2" 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
+		NR == 2 { print $c[name] }' "$1"
+}
+# values FILE: a text grid's values, one line
+values() { grep -v '^#' "$1" | tr '\n' ' ' | sed 's/ *$//'; }
+
+# 2 x 2 map of 5 nm x 5 nm, heights +-1 nm (hrms 1 nm), unit "nm".
+cat > nm.cdl <<'CDL'
+netcdf nm {
+dimensions:
+	x = 2 ;
+	y = 2 ;
+variables:
+	double x(x) ;
+		x:length = 5. ;
+		x:periodic = 0 ;
+		x:unit = "nm" ;
+	double y(y) ;
+		y:length = 5. ;
+		y:periodic = 0 ;
+		y:unit = "nm" ;
+	double heights(x, y) ;
+		heights:unit = "nm" ;
+data:
+	heights = 1, -1, -1, 1 ;
+}
+CDL
+ncgen -k nc6 -o nm.nc nm.cdl
+surfstat -q --unit m nm.nc > nm.tsv 2>/dev/null
+check "unit nm: lx in m is 5e-9" [ "$(col_of nm.tsv lx)" = 5e-09 ]
+check "unit nm: hrms in m is 1e-9" [ "$(col_of nm.tsv hrms)" = 1e-09 ]
+check "unit nm: listed as nm" [ "$(surfstat --channels nm.nc | awk -F'\t' 'NR == 2 { print $7 "," $8 }')" = nm,nm ]
+# the same with length_unit only (older files)
+sed 's/:unit = /:length_unit = /' nm.cdl | sed '/heights:length_unit/d' > old.cdl
+ncgen -k nc6 -o old.nc old.cdl
+surfstat -q --unit m old.nc > old.tsv 2>/dev/null
+check "length_unit nm: hrms in m is 1e-9" [ "$(col_of old.tsv hrms)" = 1e-09 ]
+
+# mask: the 999 at x = 1, y = 1 (file index [1][1]) is missing
+cat > mask.cdl <<'CDL'
+netcdf mask {
+dimensions:
+	x = 3 ;
+	y = 2 ;
+variables:
+	double x(x) ;
+		x:length = 6. ;
+		x:unit = "um" ;
+	double y(y) ;
+		y:length = 4. ;
+		y:unit = "um" ;
+	double heights(x, y) ;
+		heights:unit = "um" ;
+	byte mask(x, y) ;
+data:
+	heights = 1, 2, 3, 999, 5, 6 ;
+	mask = 0, 0, 0, 1, 0, 0 ;
+}
+CDL
+ncgen -k nc6 -o mask.nc mask.cdl
+surfwarp mask.nc -o mask.txt
+check "mask: the masked 999 is missing (rows are y)" [ "$(values mask.txt)" = "1 3 5 2 nan 6" ]
+
+# default fill: heights(1, 0) never written ('_' in CDL), no _FillValue
+cat > fill.cdl <<'CDL'
+netcdf fill {
+dimensions:
+	x = 2 ;
+	y = 2 ;
+variables:
+	double heights(x, y) ;
+data:
+	heights = 1, _, 3, 4 ;
+}
+CDL
+ncgen -k nc6 -o fill.nc fill.cdl
+surfwarp fill.nc -o fill.txt
+check "default fill: the point never written is missing" [ "$(values fill.txt)" = "1 3 nan 4" ]
+
+# a line scan: heights(x) only, 4 points over 8 um, periodic
+cat > line.cdl <<'CDL'
+netcdf line {
+dimensions:
+	x = 4 ;
+variables:
+	double x(x) ;
+		x:length = 8. ;
+		x:periodic = 1 ;
+		x:unit = "um" ;
+	double heights(x) ;
+		heights:unit = "um" ;
+data:
+	heights = 1, 2, 4, 1 ;
+}
+CDL
+ncgen -k nc6 -o line.nc line.cdl
+check "line scan: read as 4 x 1 over 8 um" [ "$(surfstat --channels line.nc | awk -F'\t' 'NR == 2 { print $3, $4, $5, $7 }')" = "4 1 8 um" ]
+surfwarp line.nc -o line.txt
+check "line scan: the heights" [ "$(values line.txt)" = "1 2 4 1" ]
+check "line scan: periodic" grep -q '^# periodic = 1' line.txt
+
+# character heights: refused by name
+cat > char.cdl <<'CDL'
+netcdf char {
+dimensions:
+	x = 2 ;
+	y = 2 ;
+variables:
+	char heights(x, y) ;
+data:
+	heights = "ab", "cd" ;
+}
+CDL
+ncgen -k nc6 -o char.nc char.cdl
+check_status "character heights: exit 1" 1 surfstat char.nc
+check "character heights: the message says so" grep -q "heights holds characters, not numbers" "$T_TMP/stderr"
+
+# What we write: a map with a missing point, in nm, periodic.
+surfwarp mask.nc -o m.nc
+ncdump m.nc > m.cdl
+for v in x y heights; do
+	check "written: $v:unit = \"um\"" grep -q "^		$v:unit = \"um\" ;" m.cdl
+done
+check "written: x:periodic = 0" grep -q '^		x:periodic = 0 ;' m.cdl
+check "written: sizes x = 3, y = 2" [ "$(grep -c -E '^	(x = 3|y = 2) ;' m.cdl)" -eq 2 ]
+check "written: heights NaN at the missing point" [ "$(sed -n '/^ heights =/,/;/p' m.cdl | tr -d ' \n')" = "heights=1,2,3,NaN,5,6;" ]
+check "written: mask 1 at the missing point" [ "$(sed -n '/^ mask =/,/;/p' m.cdl | tr -d ' \n')" = "mask=0,0,0,1,0,0;" ]
+surfwarp m.nc -o m.txt
+check "written and read back: the same values" [ "$(values m.txt)" = "$(values mask.txt)" ]
+surfwarp --periodic nm.nc -o g.nc 2>/dev/null
+ncdump -h g.nc > g.cdl
+check "written: periodic = 1 on x and y" [ "$(grep -c ':periodic = 1 ;' g.cdl)" -eq 2 ]
+check "written: no mask when nothing is missing" [ "$(grep -c 'mask' g.cdl)" -eq 0 ]
+check "written: unit nm" grep -q 'x:unit = "nm"' g.cdl
+# a line scan goes out in the 1D layout
+surfwarp line.nc -o l2.nc
+ncdump -h l2.nc > l2.cdl
+check "written line scan: only dimension x" [ "$(sed -n '/^dimensions:/,/^variables:/p' l2.cdl | grep -c ' = ')" -eq 1 ]
+check "written line scan: heights(x)" grep -q 'double heights(x) ;' l2.cdl
+check "written line scan: x:length = 8" grep -q 'x:length = 8. ;' l2.cdl
+summary
