@@ -23,7 +23,7 @@ static const char *const result_cols[] = {
 	"kappa_c_err", "a_over_p", "a_r_sd", "a_r_se", "n_seeds", "n_disc",
 	"eps_c", "eps_c_used", "eps_f", "eps_t", "order", "order_err",
 	"a_richardson", "a_yastrebov", "a_yastrebov_011", "a_yastrebov_mod",
-	"alpha_mod", "gbar_c_ratio", "method", NULL
+	"alpha_mod", "gbar_c_ratio", "a_r_floor", "method", NULL
 };
 
 static int
@@ -158,6 +158,7 @@ fill_row(struct ctx *c, rc_row *row, const struct est *x, const struct derived *
 	bad_alloc |= rc_row_num(row, "a_yastrebov_mod", x->a_ymod);
 	bad_alloc |= rc_row_num(row, "alpha_mod", x->alpha_mod);
 	bad_alloc |= rc_row_num(row, "gbar_c_ratio", x->gratio);
+	bad_alloc |= rc_row_num(row, "a_r_floor", x->a_r_floor);
 	for (size_t k = 0; k < rs->ncols; k++) {
 		if (!key_shown(c, k))
 			continue;

@@ -28,6 +28,7 @@ struct est {
 	size_t row;		/* representative input row: keys, file:line */
 	double p_star;
 	double a_r, a_r_err, a_r_sd, a_r_se;
+	double a_r_floor;	/* the least a_r_err may be (cstats.h) */
 	double a_rich, a_y, a_y011, a_ymod, alpha_mod;
 	double gratio, gratio_err;
 	double order, order_err;

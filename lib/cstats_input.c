@@ -478,7 +478,8 @@ rc__cs_validate(struct ctx *c, size_t *nrec)
 		    !warned_ncl++)
 			rc__cs_warn(c, RC_CSTATS_WARN_MISSING,
 			    "%s: no n_c, n_cl or n_tot: "
-			    "Yastrebov estimates are nan for such rows",
+			    "Yastrebov estimates are nan and a_r_err has no "
+			    "counting floor for such rows",
 			    rc__cs_where(c, i));
 		n++;
 	}

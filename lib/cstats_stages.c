@@ -57,10 +57,11 @@ drop_duplicates(struct ctx *c, struct rec *r, size_t n)
 }
 
 /* The Richardson fit of one discretisation set r[0..m-1] (eps increasing)
- * into x; -1 (reported) if it cannot be done. */
+ * into x, its error bar with the counting floor (cstats.h); -1 (reported)
+ * if it cannot be done.  eps, y, w: scratch of m values; cnt: of 2 m. */
 static int
 continuum_fit(struct ctx *c, const struct rec *r, size_t m, struct est *x,
-    double *eps, double *y, double *w)
+    double *eps, double *y, double *w, double *cnt)
 {
 	const rc_cstats_opts *o = c->o;
 	rc_extrap_opts model = o->cont;
@@ -98,7 +99,14 @@ continuum_fit(struct ctx *c, const struct rec *r, size_t m, struct est *x,
 		return -1;
 	}
 	x->a_r = x->a_rich = fit.value;
-	x->a_r_err = fit.err;
+	for (size_t i = 0; i < m; i++) {
+		cnt[i] = r[i].n_cl;
+		cnt[m + i] = r[i].n_tot;
+	}
+	x->a_r_floor = RC_CSTATS_FLOOR_C * rc_count_noise(w, cnt, cnt + m, m);
+	if (isnan(x->a_r_floor))
+		x->a_r_floor = 0;	/* no counts: warned at input */
+	x->a_r_err = hypot(fit.err, x->a_r_floor);
 	x->order = fit.order;
 	x->order_err = o->cont.auto_order && !model.auto_order ? NAN :
 	    fit.order_err;
@@ -132,6 +140,7 @@ rc__cs_stage_continuum(struct ctx *c, struct rec *r, size_t n, size_t *nout)
 	double *eps = rc__cs_pool_alloc(c, n, sizeof(double));
 	double *y = rc__cs_pool_alloc(c, n, sizeof(double));
 	double *w = rc__cs_pool_alloc(c, n, sizeof(double));
+	double *cnt = rc__cs_pool_alloc(c, 2 * n, sizeof(double));
 	size_t ne = 0;
 
 	for (size_t i = 0; i < n; i++)
@@ -176,7 +185,7 @@ rc__cs_stage_continuum(struct ctx *c, struct rec *r, size_t n, size_t *nout)
 			x->order = x->order_err = NAN;
 			x->n_disc = 1;
 			x->eps_c_used = rc__cs_list_of(c, &f->eps_c, 1);
-		} else if (continuum_fit(c, f, m, x, eps, y, w) != 0)
+		} else if (continuum_fit(c, f, m, x, eps, y, w, cnt) != 0)
 			continue;
 		ne++;
 	}
@@ -221,6 +230,7 @@ rc__cs_stage_ensemble(struct ctx *c, struct est *in, size_t n, size_t *nout)
 		MEAN(alpha_mod);
 		MEAN(order);
 		MEAN(order_err);
+		MEAN(a_r_floor);
 #undef MEAN
 		for (size_t i = a; i < b; i++) {
 			v[i - a] = in[i].a_r;
@@ -263,7 +273,7 @@ limit_fit(struct ctx *c, const struct est *in, size_t m, const double *eps,
 	const char *what = which == 'f' ? "eps_f = lambda_s/lambda_r" :
 	    "eps_t = lambda_r/lx";
 	size_t need = model->auto_order ? 3 : model->nterms + 1, best = 0;
-	double stat = 0, gstat = 0, sestat = 0, g = 0, gmodel;
+	double stat = 0, gstat = 0, sestat = 0, fstat = 0, g = 0, gmodel;
 	rc_fit fit;
 	rc_err err;
 
@@ -292,6 +302,7 @@ limit_fit(struct ctx *c, const struct est *in, size_t m, const double *eps,
 		stat += wi * wi * in[i].a_r_err * in[i].a_r_err;
 		gstat += wi * wi * in[i].gratio_err * in[i].gratio_err;
 		sestat += wi * wi * in[i].a_r_se * in[i].a_r_se;
+		fstat += wi * wi * in[i].a_r_floor * in[i].a_r_floor;
 		x->a_rich += wi * in[i].a_rich;
 		x->a_y += wi * in[i].a_y;
 		x->a_y011 += wi * in[i].a_y011;
@@ -322,6 +333,7 @@ limit_fit(struct ctx *c, const struct est *in, size_t m, const double *eps,
 	x->gratio_err = sqrt(gstat + gmodel * gmodel);
 	x->a_r_err = sqrt(stat + fit.err * fit.err);
 	x->a_r_se = sqrt(sestat);
+	x->a_r_floor = sqrt(fstat);
 	return 0;
 }
 

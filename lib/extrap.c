@@ -427,6 +427,20 @@ rc_yastrebov_alpha_mod(double n_c1, double n_cl1, double n_tot1, double n_c2,
 	return (n_c1 / n_tot1 - n_c2 / n_tot2) / den;
 }
 
+double
+rc_count_noise(const double *w, const double *n_cl, const double *n_tot,
+    size_t n)
+{
+	double v = 0;
+
+	for (size_t i = 0; i < n; i++) {
+		if (!(n_tot[i] > 0) || isnan(n_cl[i]))
+			return NAN;
+		v += w[i] * w[i] * n_cl[i] / (n_tot[i] * n_tot[i]);
+	}
+	return sqrt(v);
+}
+
 int
 rc_ensemble_stats(const double *x, size_t n, rc_ensemble *e, rc_err *err)
 {

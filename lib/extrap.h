@@ -63,6 +63,17 @@ double rc_yastrebov(double n_c, double n_cl, double n_tot, double alpha);
 double rc_yastrebov_alpha_mod(double n_c1, double n_cl1, double n_tot1,
     double n_c2, double n_cl2, double n_tot2);
 
+/* The counting noise of an estimate sum_i w_i a_i of contact fractions
+ * a_i = n_c_i / n_tot_i: which pixels along a contact line are counted
+ * in contact changes from grid to grid like a random draw, of variance
+ * proportional to the n_cl_i points on the line, so the estimate scatters
+ * by
+ *   sqrt(sum_i w_i^2 n_cl_i / n_tot_i^2)
+ * times a constant (measured: RC_CSTATS_FLOOR_C, cstats.h).  NaN if any
+ * n_cl_i or n_tot_i is missing (NaN) or n_tot_i <= 0. */
+double rc_count_noise(const double *w, const double *n_cl,
+    const double *n_tot, size_t n);
+
 typedef struct rc_ensemble {
 	size_t n;
 	double mean;

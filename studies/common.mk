@@ -14,7 +14,7 @@
 #       hard0.5 (--hardness, implies mcg), th0.125 (an elastic layer of
 #       that --thickness), nu0.3 (its --poisson), slip (its --substrate),
 #       kpixel (gfmd-solve --kernel pixel), adh0.001 rho0.002 (--adhesion
-#       and its --range)
+#       and its --range), fd (--fd: gbar and gbar_c by finite differences)
 #   $(OUT)/stat/NAME.tsv           surfstat scalars of surface NAME
 # A study lists the files its figure needs and reduces them with
 # contact-stats, awk and gnuplot.  Tools are not prerequisites (other
@@ -78,6 +78,7 @@ solveopts = -p $(patsubst p%,%,$(filter p%,$(call solve_words,$(1)))) \
 	$(patsubst th%,--thickness %,$(filter th%,$(call solve_words,$(1)))) \
 	$(patsubst nu%,--poisson %,$(filter nu%,$(call solve_words,$(1)))) \
 	$(if $(filter slip,$(call solve_words,$(1))),--substrate slip) \
+	$(if $(filter fd,$(call solve_words,$(1))),--fd) \
 	$(patsubst k%,--kernel %,$(filter k%,$(call solve_words,$(1)))) \
 	$(patsubst adh%,--adhesion %,$(filter adh%,$(call solve_words,$(1)))) \
 	$(patsubst rho%,--range %,$(filter rho%,$(call solve_words,$(1))))

@@ -74,6 +74,18 @@ row(double p, int seed, double H, int nx, double lambda_s)
 	    nx, H, lambda_s, seed);
 }
 
+/* The counting floor of a linear Richardson pair, grids nx1 (finer) and
+ * nx2 = nx1/2 at eps_c e1 and 2 e1: weights 2 and -1, n_cl/n_tot =
+ * (B0 + D1 eps)/N (cstats.h). */
+static double
+pair_floor(double e1, int nx1)
+{
+	double n1 = (double)nx1 * nx1, n2 = n1 / 4;
+
+	return RC_CSTATS_FLOOR_C * sqrt(4 * (B0 + D1 * e1) / n1 +
+	    (B0 + D1 * 2 * e1) / n2);
+}
+
 static int
 run(rc_cstats *res, const rc_cstats_opts *o, rc_err *err)
 {
@@ -134,7 +146,11 @@ test_ensemble(void)
 	test_int((long long)res.ncurves, 2, "one curve per H");
 	for (size_t i = 0; i < res.nrows && i < 2; i++) {
 		double H = hs[i], a0 = limit_a(2, H, 0.0625);
-		double se = 0.001 / sqrt(3), err_a = sqrt(se * se + pow(mean_c * e1, 2));
+		/* each seed's bar: hypot(c_s e1, floor); their mean */
+		double fl = pair_floor(e1, 128), mean_bar = 0;
+		for (int s = 1; s <= 3; s++)
+			mean_bar += hypot(slope(s) * e1, fl) / 3;
+		double se = 0.001 / sqrt(3), err_a = sqrt(se * se + mean_bar * mean_bar);
 		test_rel(num(&res, i, "H"), H, 0, "curves in input order: H");
 		test_rel(num(&res, i, "a_r"), a0, 1e-12, "a_r = mean of a0 (H %g)", H);
 		test_rel(num(&res, i, "a_richardson"), a0, 1e-12,
@@ -143,9 +159,12 @@ test_ensemble(void)
 		 * raw values first would give the spread at eps, 0.00225 s. */
 		test_rel(num(&res, i, "a_r_sd"), 0.001, 1e-9, "a_r_sd of the limits");
 		test_rel(num(&res, i, "a_r_se"), se, 1e-9, "a_r_se = sd/sqrt(3)");
-		/* two points: each seed's error is its whole correction c_s e1 */
+		/* two points: each seed's error is its whole correction c_s e1
+		 * with the counting floor */
 		test_rel(num(&res, i, "a_r_err"), err_a, 1e-9,
-		    "a_r_err = sqrt(se^2 + <c_s e1>^2)");
+		    "a_r_err = sqrt(se^2 + <hypot(c_s e1, floor)>^2)");
+		test_rel(num(&res, i, "a_r_floor"), fl, 1e-12,
+		    "a_r_floor = the seeds' mean floor");
 		/* alpha_mod = (a(e1) - a(e2))/(b(e1) - b(e2)) = c_s/d, and
 		 * a(e1) - alpha_mod b(e1) = a0 - c_s b0/d for every seed */
 		test_rel(num(&res, i, "alpha_mod"), mean_c / D1, 1e-9,
@@ -194,8 +213,8 @@ test_ensemble(void)
 		    slope(s) * e1;
 		test_rel(num(&res, i, "a_r"), limit_a(s, H, 0.0625), 1e-12,
 		    "per seed %d, H %g: a_r = a0", s, H);
-		test_rel(num(&res, i, "a_r_err"), slope(s) * e1, 1e-9,
-		    "per seed: a_r_err = c_s e1");
+		test_rel(num(&res, i, "a_r_err"), hypot(slope(s) * e1,
+		    pair_floor(e1, 128)), 1e-9, "per seed: a_r_err = hypot(c_s e1, floor)");
 		test_true(isnan(num(&res, i, "a_r_se")) && isnan(num(&res, i,
 		    "a_r_sd")), "per seed: no ensemble sd, se");
 		test_rel(num(&res, i, "a_yastrebov"), a1 - 0.2 * (B0 + D1 * e1),
@@ -274,9 +293,16 @@ test_fractal(void)
 	/* each member's error: sqrt(se^2 + (<c_s> e1)^2), e1 = eps_c = 1/8
 	 * in both sets; the two-point model term is the whole correction in
 	 * eps_f, 0.05 eps_f at the finest eps_f = 1/16 */
-	double m = sqrt(se * se + pow(0.04 * 0.125, 2));
-	test_rel(num(&res, 0, "a_r_err"), sqrt(5 * m * m + pow(0.05 / 16, 2)),
-	    1e-9, "a_r_err = sqrt(sum w^2 err^2 + model^2)");
+	double bar16 = 0, bar32 = 0;	/* mean per-seed bars, lambda_s 1/16, 1/32 */
+	for (int s = 1; s <= 3; s++) {
+		bar16 += hypot(slope(s) * 0.125, pair_floor(0.125, 128)) / 3;
+		bar32 += hypot(slope(s) * 0.125, pair_floor(0.125, 256)) / 3;
+	}
+	double m16 = sqrt(se * se + bar16 * bar16), m32 = sqrt(se * se + bar32 * bar32);
+	test_rel(num(&res, 0, "a_r_err"), sqrt(4 * m32 * m32 + m16 * m16 +
+	    pow(0.05 / 16, 2)), 1e-9, "a_r_err = sqrt(sum w^2 err^2 + model^2)");
+	test_rel(num(&res, 0, "a_r_floor"), hypot(2 * pair_floor(0.125, 256),
+	    pair_floor(0.125, 128)), 1e-9, "a_r_floor = sqrt(sum w^2 floor^2)");
 	double a011 = 2 * (limit_a(2, 0.8, 0.03125) + 0.04 * 0.125) -
 	    (limit_a(2, 0.8, 0.0625) + 0.04 * 0.125) - 0.11 * (B0 + D1 * 0.125);
 	test_rel(num(&res, 0, "a_yastrebov_011"), a011, 1e-12,
@@ -290,6 +316,59 @@ test_fractal(void)
 	    "richardson(1)+ensemble+fractal(1)") == 0, "method %s",
 	    cell(&res, 0, "method"));
 	rc_cstats_free(&res);
+}
+
+/* The floor of a_r_err (cstats.h): three grids whose pair difference
+ * vanishes by chance (curvature d eps^2 cancelled by a count fluctuation
+ * on the coarsest grid), so the extrapolation's own estimate |D|/3 is
+ * ~0 while the Richardson value misses a0 by 2 d e1^2.  Before the floor
+ * a_r_err was that ~0 (4e-19 in a review's real case); now it is the
+ * counting noise of the pair, a stated function of n_cl and n_tot. */
+static void
+test_floor(void)
+{
+	const int nx[3] = { 256, 128, 64 };
+	const double ncl[3] = { 2000, 1000, 400 };
+	const double a0 = 0.1, c = 0.04, d = 0.08, e1 = 0.0625;
+	double a[3];
+	rc_cstats_opts o;
+	rc_cstats res;
+	rc_err err;
+
+	for (int pass = 0; pass < 2; pass++) {
+		header();
+		for (int i = 0; i < 3; i++) {
+			double e = e1 * (1 << i), n = (double)nx[i] * nx[i];
+			a[i] = a0 + c * e + d * e * e;
+			if (i == 2 && pass == 0)
+				a[i] -= 6 * d * e1 * e1;	/* D = 2a1 - 3a2 + a3 = 0 */
+			put("0.05\t%.17g\t%.17g\t%.17g\t%.17g\t1\t1.2\t%d\t%d\t1\t1\t"
+			    "0.8\t0.5\t0.0625\t1\n", a[i], a[i] * n, ncl[i], n,
+			    nx[i], nx[i]);
+		}
+		rc_cstats_opts_default(&o);
+		o.per_seed = 1;
+		test_int(run(&res, &o, &err), 0, "floor run %d", pass);
+		/* weights 2, -1, 0 of the finest pair */
+		double fl = RC_CSTATS_FLOOR_C * sqrt(4 * ncl[0] / pow(65536, 2) +
+		    ncl[1] / pow(16384, 2));
+		double D = (2 * a[0] - a[1]) - (2 * a[1] - a[2]);
+		test_rel(num(&res, 0, "a_r"), 2 * a[0] - a[1], 1e-12,
+		    "floor case %d: a_r = the finest pair's Richardson value", pass);
+		test_rel(num(&res, 0, "a_r_floor"), fl, 1e-12,
+		    "a_r_floor = C sqrt(4 n_cl1/N1^2 + n_cl2/N2^2)");
+		test_rel(num(&res, 0, "a_r_err"), hypot(fabs(D) / 3, fl), 1e-12,
+		    "a_r_err = hypot(|D|/3, floor), |D| = %.3g", fabs(D));
+		test_true(num(&res, 0, "a_r_err") >= fl && fl > 1e-4,
+		    "a_r_err %.3g >= floor %.3g", num(&res, 0, "a_r_err"), fl);
+		if (pass == 0)
+			/* the miss 2 d e1^2 = 6.25e-4 is within 2 bars here */
+			test_true(fabs(num(&res, 0, "a_r") - a0) <
+			    2 * num(&res, 0, "a_r_err"), "vanishing D: the truth "
+			    "within two bars (miss %.3g, bar %.3g)", fabs(num(&res,
+			    0, "a_r") - a0), num(&res, 0, "a_r_err"));
+		rc_cstats_free(&res);
+	}
 }
 
 static void
@@ -388,6 +467,7 @@ main(void)
 	test_ensemble();
 	test_used();
 	test_fractal();
+	test_floor();
 	test_errors();
 	test_parse();
 	return test_summary();

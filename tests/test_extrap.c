@@ -273,6 +273,22 @@ test_schedule(void)
 	    "bad schedule arguments give NaN");
 }
 
+/* rc_count_noise: sqrt(sum w^2 n_cl / n_tot^2), by hand; NaN without
+ * counts. */
+static void
+test_count_noise(void)
+{
+	const double w[3] = { 2, -1, 0 }, ncl[3] = { 400, 100, 7 };
+	const double ntot[3] = { 10000, 2500, 625 };
+	double nan_ncl[3] = { 400, NAN, 7 };
+
+	/* 4 * 400 / 1e8 + 100 / 6.25e6 = 1.6e-5 + 1.6e-5 */
+	test_rel(rc_count_noise(w, ncl, ntot, 3), sqrt(3.2e-5), 1e-14,
+	    "count noise of a Richardson pair");
+	test_true(isnan(rc_count_noise(w, nan_ncl, ntot, 3)), "no n_cl: NaN");
+	test_true(rc_count_noise(w, ncl, ntot, 0) == 0, "no points: 0");
+}
+
 int
 main(void)
 {
@@ -283,5 +299,6 @@ main(void)
 	test_yastrebov();
 	test_ensemble();
 	test_schedule();
+	test_count_noise();
 	return test_summary();
 }

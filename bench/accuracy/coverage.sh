@@ -1,129 +1,143 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
-# coverage.sh - are contact-stats' error bars calibrated?
+# coverage.sh - do contact-stats' error bars cover what they claim, on
+# surfaces their calibration never saw?
 #
-# For SEEDS independent surfaces (H 0.8, lambda_r/L = 1/2, lambda_s/L =
-# 1/16) at three pressures, each estimate of a_r and kappa that
-# contact-stats makes from the coarse grids eps_c = 1/4, 1/8, 1/16 (64^2
-# ... 256^2) is compared with a reference extrapolated from eps_c = 1/32,
-# 1/64, 1/128 (512^2 ... 2048^2, fitted order, independent of the
-# estimates).  Coverage is the fraction of estimates whose interval
-# estimate +- err contains the reference: a calibrated one-sigma error
-# covers about 68%.  Per surface (--per-seed: the extrapolation error
-# alone) and per ensemble of GROUP seeds (seed error and extrapolation
-# error combined, against the mean of the references).
-#   sh coverage.sh [BIN=dir] (environment: BIN, OUT, SEEDS, GROUP)
-# Prints a table; writes $OUT/coverage.tsv.
+# Scene: H 0.8, lambda_r/L = 1/2, lambda_s/L = 1/16, p* = 0.1, 0.05,
+# 0.025.  Each seed is solved on 64^2 ... 1024^2 (eps_c = 1/4 ... 1/64;
+# gfmd-solve defaults, one thread).  The estimate of a surface is what
+# contact-stats --per-seed makes from 64^2, 128^2 and 256^2 (eps_c = 1/4,
+# 1/8, 1/16), with a_r_err and kappa_err; its reference is the Richardson
+# value of 512^2 and 1024^2 (eps_c = 1/32, 1/64; the 256^2 grid enters
+# only the reference's own error bar, through the same model).
+#
+# Two sets of seeds: CAL_SEEDS calibrate the floor constant
+# RC_CSTATS_FLOOR_C (lib/cstats.h): the constant that makes the bar
+# a_r_err = sqrt(err^2 + (C noise)^2) cover 68% of them; TEST_SEEDS, never
+# used for that, check it.  For each set and pressure: coverage (the
+# fraction of surfaces with |a_r - reference| <= a_r_err; a one-sigma bar
+# covers 68%) with its binomial standard error sqrt(c (1 - c)/n), the
+# same with the reference's own bar added in quadrature, kappa's
+# coverage, the median |error|/a_r_err (0.674 for a calibrated Gaussian
+# bar), and the smallest bar relative to its floor (never below 1).
+#
+#   sh coverage.sh   (environment: BIN, OUT, CAL_SEEDS, TEST_SEEDS, NICE)
+# Defaults: CAL_SEEDS 5001-5016 and 6001-6016, TEST_SEEDS 7001-7016 (the
+# first round, CAL_SEEDS 6001-6016 against TEST_SEEDS 5001-5016, is in
+# README.md).
+# Solutions are cached per seed and grid in $OUT/sol (a rerun solves
+# only what is missing; about 1 min of one core per seed on an idle
+# machine).  Prints the table; writes $OUT/coverage.tsv.
 set -eu
-BIN=${BIN:-$(cd "$(dirname "$0")/../.." && pwd)/bin}
+HERE=$(cd "$(dirname "$0")" && pwd)
+BIN=${BIN:-$HERE/../../bin}
 OUT=${OUT:-out-coverage}
-SEEDS=${SEEDS:-$(seq 1 16)}
-GROUP=${GROUP:-4}
+CAL_SEEDS=${CAL_SEEDS:-$(seq 5001 5016) $(seq 6001 6016)}
+TEST_SEEDS=${TEST_SEEDS:-$(seq 7001 7016)}
+NICE=${NICE:-5}
 P=0.1,0.05,0.025
 mkdir -p "$OUT/surf" "$OUT/sol"
 
-# Surfaces and solutions, skipped when present (re-runs are cheap).
-for s in $SEEDS; do
-	for n in 64 128 256 512 1024 2048; do
+for s in $CAL_SEEDS $TEST_SEEDS; do
+	for n in 64 128 256 512 1024; do
 		f=n${n}_seed$s
 		[ -s "$OUT/sol/$f.tsv" ] && continue
 		"$BIN/surfgen" -q -n "$n" -H 0.8 --lambda-r 0.5 --lambda-s 0.0625 \
 		    --seed "$s" -o "$OUT/surf/$f.surf"
-		"$BIN/gfmd-solve" -q -j 1 -p "$P" -o "$OUT/sol/$f.tsv.part" \
-		    "$OUT/surf/$f.surf"
+		nice -n "$NICE" "$BIN/gfmd-solve" -q -j 1 -p "$P" \
+		    -o "$OUT/sol/$f.tsv.part" "$OUT/surf/$f.surf"
 		mv "$OUT/sol/$f.tsv.part" "$OUT/sol/$f.tsv"
 		rm -f "$OUT/surf/$f.surf"
 	done
 done
 
-sols() {	# sols SEEDS... with grid sizes in $GRIDS
-	for s in "$@"; do for n in $GRIDS; do printf '%s ' "$OUT/sol/n${n}_seed$s.tsv"; done; done
+# The constant the estimates were made with.
+C=$(awk '$1 == "#define" && $2 == "RC_CSTATS_FLOOR_C" { print $3 }' \
+    "$HERE/../../lib/cstats.h")
+sols() {	# sols GRIDS SEEDS...
+	g=$1
+	shift
+	for s in "$@"; do for n in $g; do printf '%s ' "$OUT/sol/n${n}_seed$s.tsv"; done; done
 }
-# seed, p_star, a_r, a_r_err, kappa, kappa_err of a contact-stats table
+# set, seed, p_star, a_r, a_r_err, a_r_floor, kappa, kappa_err
 cols='FNR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-	{ print $c["seed"], $c["p_star"], $c["a_r"], $c["a_r_err"], $c["kappa"], $c["kappa_err"] }'
-
-GRIDS="512 1024 2048"
-# shellcheck disable=SC2046
-"$BIN/contact-stats" -q --per-seed --order auto $(sols $SEEDS) -o "$OUT/ref.tsv"
-awk -F'\t' "$cols" "$OUT/ref.tsv" >"$OUT/ref.txt"
-
+	{ print set, $c["seed"], $c["p_star"], $c["a_r"], $c["a_r_err"],
+	    $c["a_r_floor"], $c["kappa"], $c["kappa_err"] }'
 : >"$OUT/est.txt"
-for est in "64 128" "128 256" "64 128 256"; do
-	GRIDS=$est
-	name=$(echo "$est" | sed 's/64/1\/4/; s/128/1\/8/; s/256/1\/16/; s/ /,/g')
-	# shellcheck disable=SC2046
-	"$BIN/contact-stats" -q --per-seed $(sols $SEEDS) -o "$OUT/est.tsv"
-	awk -F'\t' "$cols" "$OUT/est.tsv" |
-	    awk -v e="$name" '{ print e, "surface", $0 }' >>"$OUT/est.txt"
-	set -- $SEEDS
-	g=0
-	while [ $# -ge "$GROUP" ]; do
-		grp=""
-		i=0
-		while [ $i -lt "$GROUP" ]; do grp="$grp $1"; shift; i=$((i + 1)); done
-		g=$((g + 1))
-		# shellcheck disable=SC2046,SC2086
-		"$BIN/contact-stats" -q $(sols $grp) -o "$OUT/est.tsv"
-		ids=$(echo $grp | tr ' ' ',')
-		awk -F'\t' -v e="$name" -v id="g$g:$ids" \
-		    'FNR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next }
-		    { print e, "ensemble", id, $c["p_star"], $c["a_r"], $c["a_r_err"], $c["kappa"], $c["kappa_err"] }' \
-		    "$OUT/est.tsv" >>"$OUT/est.txt"
-	done
+: >"$OUT/ref.txt"
+for set in cal test; do
+	if [ $set = cal ]; then seeds=$CAL_SEEDS; else seeds=$TEST_SEEDS; fi
+	# shellcheck disable=SC2046,SC2086
+	"$BIN/contact-stats" -q --per-seed $(sols "64 128 256" $seeds) \
+	    -o "$OUT/est-$set.tsv"
+	# shellcheck disable=SC2046,SC2086
+	"$BIN/contact-stats" -q --per-seed $(sols "256 512 1024" $seeds) \
+	    -o "$OUT/ref-$set.tsv"
+	awk -F'\t' -v set=$set "$cols" "$OUT/est-$set.tsv" >>"$OUT/est.txt"
+	awk -F'\t' -v set=$set "$cols" "$OUT/ref-$set.tsv" >>"$OUT/ref.txt"
 done
 
-# Coverage: per surface against the reference of that seed (the
-# extrapolation error alone; the reference's own error is 10-50x below
-# the estimates' and is neglected).  Per ensemble against the mean
-# reference of all the OTHER seeds, an independent sample of the same
-# population: the interval is then +- sqrt(err^2 + se_others^2), with
-# se_others the standard error of that mean.
-awk '
-	FILENAME ~ /ref.txt$/ {
-		ra[$1 " " $2] = $3; rk[$1 " " $2] = $5
-		if (!($1 in seen)) { seen[$1] = 1; seeds[++ns] = $1 }
-		next
+# Per surface: error e = |a_r - ref|, bar b = a_r_err, the pair part
+# d = sqrt(b^2 - floor^2) and the noise n = floor / C; the constant that
+# would just cover it is c = sqrt(e^2 - d^2)/n (0 if d alone covers).
+# Calibration: Ccal = the 68th percentile of c over CAL_SEEDS; TEST is
+# then scored with Ccal (the out-of-sample check) and every set with the
+# compiled C (what contact-stats writes).
+awk -v C="$C" '
+	function sort(s, v,   m, i, j, t) {
+		m = split(s, v, " ")
+		for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (v[j] < v[i]) { t = v[i]; v[i] = v[j]; v[j] = t }
+		return m
 	}
+	function median(s,   v, m) { m = sort(s, v); return m % 2 ? v[(m + 1) / 2] : (v[m / 2] + v[m / 2 + 1]) / 2 }
+	function quantile(s, q,   v, m, k) { m = sort(s, v); k = int(q * m + 0.999999); return v[k < 1 ? 1 : k] }
+	FILENAME ~ /ref.txt$/ { ra[$1 " " $2 " " $3] = $4; re[$1 " " $2 " " $3] = $5
+		rk[$1 " " $2 " " $3] = $7; rke[$1 " " $2 " " $3] = $8; next }
 	{
-		e = $1; lvl = $2; p = $4; extra_a = extra_k = 0
-		if (lvl == "surface") { key = $3 " " p; ref_a = ra[key]; ref_k = rk[key] }
-		else {
-			delete in_grp
-			split(substr($3, index($3, ":") + 1), sd, ",")
-			for (i in sd) in_grp[sd[i]] = 1
-			sa = sa2 = sk = sk2 = m = 0
-			for (i = 1; i <= ns; i++) {
-				if (seeds[i] in in_grp) continue
-				va = ra[seeds[i] " " p]; vk = rk[seeds[i] " " p]
-				sa += va; sa2 += va * va; sk += vk; sk2 += vk * vk; m++
-			}
-			ref_a = sa / m; ref_k = sk / m
-			extra_a = m > 1 ? (sa2 - m * ref_a * ref_a) / (m - 1) / m : 0
-			extra_k = m > 1 ? (sk2 - m * ref_k * ref_k) / (m - 1) / m : 0
+		key = $1 " " $2 " " $3
+		e = $4 - ra[key]; if (e < 0) e = -e
+		ek = $7 - rk[key]; if (ek < 0) ek = -ek
+		b = $5; f = $6
+		d2 = b * b - f * f; if (d2 < 0) d2 = 0
+		need = e * e - d2
+		c = need <= 0 ? 0 : (f > 0 ? sqrt(need) / (f / C) : 1e9)
+		if ($1 == "cal") cs = cs " " c
+		nr++; S[nr] = $1; PS[nr] = $3; E[nr] = e; D2[nr] = d2; NS[nr] = f / C
+		for (k = 0; k < 2; k++) {
+			id = $1 " " (k ? "all" : $3)
+			n[id]++
+			if (e <= b) cov[id]++
+			if (e <= sqrt(b * b + re[key] * re[key])) covr[id]++
+			if (ek <= $8) covk[id]++
+			z[id] = z[id] " " (b > 0 ? e / b : 1e9)
+			rel[id] = rel[id] " " (f > 0 ? b / f : 1e9)
+			sa[id] += e / ra[key]; sb[id] += b / ra[key]
+			if (!(id in seen)) { seen[id] = 1; ids[++nid] = id }
 		}
-		ea = sqrt($6 * $6 + extra_a); ek = sqrt($8 * $8 + extra_k)
-		id = e " " lvl
-		n[id]++
-		da = $5 - ref_a; if (da < 0) da = -da
-		dk = $7 - ref_k; if (dk < 0) dk = -dk
-		if (da <= ea) ca[id]++
-		if (dk <= ek) ck[id]++
-		ra_sum[id] += da / ref_a; re_sum[id] += ea / ref_a
-		z[id] = z[id] " " (ea > 0 ? da / ea : 1e9)
-		order[id] = ++k
 	}
 	END {
-		print "eps_c\tlevel\tn\tcoverage_a_r\tcoverage_kappa\tmean_abs_err_rel\tmean_interval_rel\tmedian_err_over_interval"
-		for (id in n) {
-			m = split(z[id], v, " ")
-			for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (v[j] < v[i]) { t = v[i]; v[i] = v[j]; v[j] = t }
-			med = m % 2 ? v[(m + 1) / 2] : (v[m / 2] + v[m / 2 + 1]) / 2
-			split(id, w, " ")
-			printf "%s\t%s\t%d\t%.2f\t%.2f\t%.3g\t%.3g\t%.3g\n", w[1], w[2], n[id],
-			    ca[id] / n[id], ck[id] / n[id], ra_sum[id] / n[id], re_sum[id] / n[id], med
+		ccal = quantile(cs, 0.68)
+		for (i = 1; i <= nr; i++) {
+			if (S[i] != "test") continue
+			for (k = 0; k < 2; k++) {
+				id = k ? "all" : PS[i]
+				tn[id]++
+				if (E[i] <= sqrt(D2[i] + ccal * ccal * NS[i] * NS[i])) tc[id]++
+			}
 		}
-	}' "$OUT/ref.txt" "$OUT/est.txt" >"$OUT/coverage.tmp"
-{ head -n 1 "$OUT/coverage.tmp"; tail -n +2 "$OUT/coverage.tmp" | sort -k2,2r -k1,1; } >"$OUT/coverage.tsv"
-rm -f "$OUT/coverage.tmp"
-column -t -s "$(printf '\t')" "$OUT/coverage.tsv"
+		printf "# C calibrated on CAL (68th percentile of the constant each surface needs): %.3f; compiled RC_CSTATS_FLOOR_C: %s\n", ccal, C
+		printf "# TEST scored with the calibrated %.3f:", ccal
+		for (id in tn) { p = tc[id] / tn[id]; printf " p* %s %.1f%% +- %.1f%% (n %d);", id, 100 * p, 100 * sqrt(p * (1 - p) / tn[id]), tn[id] }
+		printf "\n"
+		print "set\tp_star\tn\tcoverage_a_r\tse\tcoverage_with_ref_err\tcoverage_kappa\tmedian_err_over_bar\tmin_bar_over_floor\tmean_abs_err_rel\tmean_bar_rel"
+		for (i = 1; i <= nid; i++) {
+			id = ids[i]; split(id, w, " ")
+			p = cov[id] / n[id]
+			printf "%s\t%s\t%d\t%.1f%%\t%.1f%%\t%.1f%%\t%.1f%%\t%.3f\t%.3f\t%.3g%%\t%.3g%%\n",
+			    w[1], w[2], n[id], 100 * p, 100 * sqrt(p * (1 - p) / n[id]),
+			    100 * covr[id] / n[id], 100 * covk[id] / n[id], median(z[id]),
+			    quantile(rel[id], 0), 100 * sa[id] / n[id], 100 * sb[id] / n[id]
+		}
+	}' "$OUT/ref.txt" "$OUT/est.txt" >"$OUT/coverage.tsv"
+grep '^#' "$OUT/coverage.tsv"
+grep -v '^#' "$OUT/coverage.tsv" | column -t -s "$(printf '\t')"

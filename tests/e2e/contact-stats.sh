@@ -40,8 +40,11 @@ check_rel "two rows (one per pressure)" "$(($(wc -l <out.tsv) - 1))" 2 0
 check_rel "a_r at p*=0.05 is the seed mean of a0" "$(col out.tsv a_r 1)" 0.10825 1e-13
 check_rel "a_r at p*=0.1" "$(col out.tsv a_r 2)" 0.20825 1e-13
 check_rel "a_r_sd = sd of 0.001 s" "$(col out.tsv a_r_sd 1)" 0.001 1e-9
-# Extrapolation error ~ 0, so a_r_err = sd/sqrt(3).
-check_rel "a_r_err = standard error" "$(col out.tsv a_r_err 1)" "$(awk 'BEGIN { printf "%.17g", 0.001 / sqrt(3) }')" 1e-9
+# Extrapolation error ~ 0, so a_r_err is the standard error sd/sqrt(3)
+# and the mean counting floor (a_r_floor, lib/cstats.h; exact values in
+# tests/test_cstats.c) in quadrature.
+check "a_r_floor positive" awk -v f="$(col out.tsv a_r_floor 1)" 'BEGIN { exit !(f > 0) }'
+check_rel "a_r_err = hypot(standard error, floor)" "$(col out.tsv a_r_err 1)" "$(awk -v f="$(col out.tsv a_r_floor 1)" 'BEGIN { printf "%.17g", sqrt(0.001 ^ 2 / 3 + f * f) }')" 1e-9
 check_rel "n_seeds" "$(col out.tsv n_seeds 1)" 3 0
 check_rel "n_disc" "$(col out.tsv n_disc 1)" 3 0
 check "eps_c values listed" test "$(col out.tsv eps_c 1)" = "0.0625,0.125,0.25"
