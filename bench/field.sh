@@ -93,7 +93,7 @@ HEAD_SOLV="file	grid	fire_it_0.01	fire_s_0.01	fire_it_0.05	fire_s_0.05	cg_it_0.0
 emit() {	# emit TSV-ROW: aligned on stdout, raw to -o FILE
 	[ -n "$TSV_OUT" ] && printf '%s\n' "$1" >>"$TSV_OUT"
 	printf '%s\n' "$1" | awk -F '\t' -v mode="$MODE" '{
-		if (mode == "path") split("28 7 9 18 12 10 7 7 8 7 7 8 10 10", w, " ")
+		if (mode == "path") split("28 7 9 18 12 12 7 7 8 7 7 8 10 10", w, " ")
 		else split("28 9 12 11 12 11 10 9 10 9 11 10 11 10", w, " ")
 		s = ""
 		for (i = 1; i < NF; i++) s = s sprintf("%-" w[i] "s ", $i)
@@ -123,6 +123,9 @@ per_pressure() {
 			P_NOTE="p*=$pk: not converged after $it it. (residual $(sig "$res"))"
 			PP_IT="$it*" PP_S=$s PP_A=$a
 		fi
+	elif [ "$(awk 'END { print (NR > 1 ? NR : 1) }' "$out" 2>/dev/null)" -lt "$k" ] && [ "$S_STATUS" = 124 ]; then
+		P_NOTE="p*=$pk: not reached (the time bound, $TLIM s, stopped an earlier pressure)"
+		PP_IT=- PP_S=- PP_A=-
 	elif [ "$S_STATUS" = 124 ]; then
 		# gfmd-solve says at which iteration the signal stopped it
 		it=$(sed -n 's/.*while solving p = [^ ]* (iteration \([0-9]*\)).*/\1/p' "$err" | head -n 1)
