@@ -79,10 +79,10 @@ col() {
 	awk -F '\t' -v c="$2" -v r="${3:-1}" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i; next }
 		NR == r + 1 && k { print $k; exit }' "$1"
 }
-# msg FILE: the first message line of a tool's stderr, without the tool
-# and path prefixes, tabs and newlines (a row's note)
+# msg FILE [NAME]: the last message line of a tool's stderr (its error,
+# after any warnings), without the tool and path prefixes and tabs
 msg() {
-	grep -v '^$' "$1" | head -n 1 | sed "s|^[a-z-]*: ||; s|^[^ :]*$2: ||; s|	| |g" | cut -c1-160
+	grep -v '^$' "$1" | tail -n 1 | sed "s|^[a-z-]*: ||; s|^[^ :]*$2: ||; s|	| |g" | cut -c1-160
 }
 # sig X: X to 4 significant digits (a_r, seconds)
 sig() { awk -v x="$1" 'BEGIN { if (x == "" || x == "-") print "-"; else printf "%.4g\n", x }'; }
