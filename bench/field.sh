@@ -283,6 +283,8 @@ for f in "$DIR"/*; do
 	fit=$(fit_verdict "$lev")
 	[ "$fit" = failed ] && add "fit: $(msg "$TMP/fit.err" "")"
 	solve "$TMP/fine.tsv" "$TMP/fine.err" fine "$lev"
+	nf=$(col "$TMP/fine.tsv" filled_points)
+	case $nf in ""|0) ;; *) add "$nf of $((R_NX * R_NY)) points filled" ;; esac
 	conv=yes
 	cells="" last=""
 	for k in 1 2; do
