@@ -17,9 +17,12 @@
 # channel (title, else number), relative 1e-6: "right", "wrong(FIELDS)",
 # "unchecked" (no manifest row: Gwyddion cannot read the file) or
 # "refused".  Every command runs under timeout; each gfmd-solve run (both
-# pressures) is bounded by FIELD_TIMEOUT seconds (default 90) and, if
-# FIELD_MAX_ITER is set, by --max-iter: a pressure stopped by either has
-# its iterations marked '*' and the note says which bound stopped it.
+# pressures) is bounded by FIELD_TIMEOUT CPU seconds (default 90: its user
+# and system time from /proc, so that a loaded machine does not stop it
+# early; wall seconds where /proc is missing), by 10 FIELD_TIMEOUT wall
+# seconds, and, if FIELD_MAX_ITER is set, by --max-iter: gfmd-solve gets
+# SIGTERM and writes the rows it finished; a pressure stopped by a bound
+# has its iterations marked '*' and the note says which bound stopped it.
 #   sh bench/field.sh [options] DIR       (make field FIELD=DIR)
 #   -m FILE      manifest (default DIR/../MANIFEST.tsv or DIR/MANIFEST.tsv
 #                if present): columns file gwyddion_reads channel title nx
@@ -72,7 +75,9 @@ trap 'rm -rf "$TMP"' EXIT
 
 SOLVE_OPTS="-q -j $THREADS"
 [ -n "$MAXIT" ] && SOLVE_OPTS="$SOLVE_OPTS --max-iter $MAXIT"
-BOUND="timeout ${TLIM} s per gfmd-solve run${MAXIT:+, --max-iter $MAXIT}"
+CLK=$(getconf CLK_TCK 2>/dev/null || echo 100)
+if [ -r /proc/self/stat ]; then TKIND="CPU s"; else TKIND="s"; fi
+BOUND="$TLIM $TKIND per gfmd-solve run${MAXIT:+, --max-iter $MAXIT}"
 
 # col TSV NAME [ROW]: the value of column NAME in data row ROW (default 1)
 col() {
@@ -101,12 +106,38 @@ emit() {	# emit TSV-ROW: aligned on stdout, raw to -o FILE
 }
 
 # solve OUT.tsv ERR LABEL FILE OPTS...: one bounded gfmd-solve run.  Sets
-# S_STATUS (exit status, 124 = timed out) and writes the rows done.
+# S_STATUS (exit status, 124 = stopped by a bound), S_WALL (its wall
+# seconds) and writes the rows done.
 solve() {
 	out=$1 err=$2 f=$4
 	shift 4
-	timeout "$TLIM" "$RC_BIN/gfmd-solve" $SOLVE_OPTS "$@" -p "$PRESSURES" "$f" >"$out" 2>"$err"
+	t0=$(date +%s)
+	if [ "$TKIND" = s ]; then
+		timeout "$TLIM" "$RC_BIN/gfmd-solve" $SOLVE_OPTS "$@" -p "$PRESSURES" "$f" >"$out" 2>"$err"
+		S_STATUS=$?
+		S_WALL=$(($(date +%s) - t0))
+		return
+	fi
+	timeout $((10 * TLIM)) "$RC_BIN/gfmd-solve" $SOLVE_OPTS "$@" -p "$PRESSURES" "$f" >"$out" 2>"$err" &
+	tpid=$!
+	# the solver is timeout's child: its CPU time (fields 14, 15 of stat)
+	cpid="" stopped=0
+	while kill -0 "$tpid" 2>/dev/null; do
+		[ -n "$cpid" ] || cpid=$(pgrep -P "$tpid" 2>/dev/null | head -n 1)
+		if [ -n "$cpid" ] && [ -r "/proc/$cpid/stat" ]; then
+			cpu=$(sed 's/.*) //' "/proc/$cpid/stat" 2>/dev/null | awk -v c="$CLK" '{ printf "%d", ($12 + $13) / c }')
+			if [ "${cpu:-0}" -ge "$TLIM" ]; then
+				kill -TERM "$cpid" 2>/dev/null
+				stopped=1
+				break
+			fi
+		fi
+		sleep 0.2
+	done
+	wait "$tpid"
 	S_STATUS=$?
+	[ "$stopped" = 1 ] && S_STATUS=124
+	S_WALL=$(($(date +%s) - t0))
 }
 # per_pressure OUT ERR K: PP_IT, PP_S, PP_A of the K-th pressure (PP_IT
 # with '*' when not converged, '-' when not reached) and a note in P_NOTE
@@ -124,15 +155,15 @@ per_pressure() {
 			PP_IT="$it*" PP_S=$s PP_A=$a
 		fi
 	elif [ "$(awk 'END { print (NR > 1 ? NR : 1) }' "$out" 2>/dev/null)" -lt "$k" ] && [ "$S_STATUS" = 124 ]; then
-		P_NOTE="p*=$pk: not reached (the time bound, $TLIM s, stopped an earlier pressure)"
+		P_NOTE="p*=$pk: not reached (the time bound, $TLIM $TKIND, stopped an earlier pressure)"
 		PP_IT=- PP_S=- PP_A=-
 	elif [ "$S_STATUS" = 124 ]; then
 		# gfmd-solve says at which iteration the signal stopped it
 		it=$(sed -n 's/.*while solving p = [^ ]* (iteration \([0-9]*\)).*/\1/p' "$err" | head -n 1)
 		done_s=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "seconds") a = i; if ($i == "plan_seconds") b = i }; next }
 			{ s += $a; p = $b } END { printf "%.0f", s + p }' "$out" 2>/dev/null)
-		P_NOTE="p*=$pk: stopped by the time bound ($TLIM s)"
-		PP_IT="${it:-?}*" PP_S=">$((TLIM - ${done_s:-0}))" PP_A=-
+		P_NOTE="p*=$pk: stopped by the time bound ($TLIM $TKIND)"
+		PP_IT="${it:-?}*" PP_S=">$((S_WALL - ${done_s:-0}))" PP_A=-
 	else
 		P_NOTE="p*=$pk: $(msg "$err" "")"
 		PP_IT=- PP_S=- PP_A=-
@@ -312,7 +343,7 @@ for f in "$DIR"/*; do
 		else
 			solve "$TMP/coarse.tsv" "$TMP/coarse-s.err" coarse "$TMP/coarse.surf"
 			if [ "$S_STATUS" = 124 ]; then
-				add "coarse solve stopped by the time bound ($TLIM s)"
+				add "coarse solve stopped by the time bound ($TLIM $TKIND)"
 			elif timeout $STEP_TLIM "$RC_BIN/contact-stats" -q "$TMP/fine.tsv" "$TMP/coarse.tsv" >"$TMP/cs.tsv" 2>"$TMP/cs.err"; then
 				ext="$(sig "$(col "$TMP/cs.tsv" a_r 1)")	$(sig "$(col "$TMP/cs.tsv" a_r 2)")"
 			else
