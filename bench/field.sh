@@ -76,7 +76,7 @@ trap 'rm -rf "$TMP"' EXIT
 SOLVE_OPTS="-q -j $THREADS"
 [ -n "$MAXIT" ] && SOLVE_OPTS="$SOLVE_OPTS --max-iter $MAXIT"
 CLK=$(getconf CLK_TCK 2>/dev/null || echo 100)
-if [ -r /proc/self/stat ]; then TKIND="CPU s"; else TKIND="s"; fi
+if [ -r /proc/self/stat ]; then TKIND="CPU s ($((10 * TLIM)) wall s)"; else TKIND="s"; fi
 BOUND="$TLIM $TKIND per gfmd-solve run${MAXIT:+, --max-iter $MAXIT}"
 
 # col TSV NAME [ROW]: the value of column NAME in data row ROW (default 1)
@@ -106,8 +106,8 @@ emit() {	# emit TSV-ROW: aligned on stdout, raw to -o FILE
 }
 
 # solve OUT.tsv ERR LABEL FILE OPTS...: one bounded gfmd-solve run.  Sets
-# S_STATUS (exit status, 124 = stopped by a bound), S_WALL (its wall
-# seconds) and writes the rows done.
+# S_STATUS (exit status, 124 = stopped by a bound), S_BOUND (which),
+# S_WALL (its wall seconds) and writes the rows done.
 solve() {
 	out=$1 err=$2 f=$4
 	shift 4
@@ -115,7 +115,7 @@ solve() {
 	if [ "$TKIND" = s ]; then
 		timeout "$TLIM" "$RC_BIN/gfmd-solve" $SOLVE_OPTS "$@" -p "$PRESSURES" "$f" >"$out" 2>"$err"
 		S_STATUS=$?
-		S_WALL=$(($(date +%s) - t0))
+		S_WALL=$(($(date +%s) - t0)) S_BOUND="$TLIM s"
 		return
 	fi
 	timeout $((10 * TLIM)) "$RC_BIN/gfmd-solve" $SOLVE_OPTS "$@" -p "$PRESSURES" "$f" >"$out" 2>"$err" &
@@ -136,8 +136,8 @@ solve() {
 	done
 	wait "$tpid"
 	S_STATUS=$?
-	[ "$stopped" = 1 ] && S_STATUS=124
-	S_WALL=$(($(date +%s) - t0))
+	S_WALL=$(($(date +%s) - t0)) S_BOUND="$((10 * TLIM)) wall s"
+	[ "$stopped" = 1 ] && S_STATUS=124 S_BOUND="$TLIM CPU s"
 }
 # per_pressure OUT ERR K: PP_IT, PP_S, PP_A of the K-th pressure (PP_IT
 # with '*' when not converged, '-' when not reached) and a note in P_NOTE
@@ -155,14 +155,14 @@ per_pressure() {
 			PP_IT="$it*" PP_S=$s PP_A=$a
 		fi
 	elif [ "$(awk 'END { print (NR > 1 ? NR : 1) }' "$out" 2>/dev/null)" -lt "$k" ] && [ "$S_STATUS" = 124 ]; then
-		P_NOTE="p*=$pk: not reached (the time bound, $TLIM $TKIND, stopped an earlier pressure)"
+		P_NOTE="p*=$pk: not reached (the time bound, $S_BOUND, stopped an earlier pressure)"
 		PP_IT=- PP_S=- PP_A=-
 	elif [ "$S_STATUS" = 124 ]; then
 		# gfmd-solve says at which iteration the signal stopped it
 		it=$(sed -n 's/.*while solving p = [^ ]* (iteration \([0-9]*\)).*/\1/p' "$err" | head -n 1)
 		done_s=$(awk -F '\t' 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "seconds") a = i; if ($i == "plan_seconds") b = i }; next }
 			{ s += $a; p = $b } END { printf "%.0f", s + p }' "$out" 2>/dev/null)
-		P_NOTE="p*=$pk: stopped by the time bound ($TLIM $TKIND)"
+		P_NOTE="p*=$pk: stopped by the time bound ($S_BOUND)"
 		PP_IT="${it:-?}*" PP_S=">$((S_WALL - ${done_s:-0}))" PP_A=-
 	else
 		P_NOTE="p*=$pk: $(msg "$err" "")"
@@ -343,7 +343,7 @@ for f in "$DIR"/*; do
 		else
 			solve "$TMP/coarse.tsv" "$TMP/coarse-s.err" coarse "$TMP/coarse.surf"
 			if [ "$S_STATUS" = 124 ]; then
-				add "coarse solve stopped by the time bound ($TLIM $TKIND)"
+				add "coarse solve stopped by the time bound ($S_BOUND)"
 			elif timeout $STEP_TLIM "$RC_BIN/contact-stats" -q "$TMP/fine.tsv" "$TMP/coarse.tsv" >"$TMP/cs.tsv" 2>"$TMP/cs.err"; then
 				ext="$(sig "$(col "$TMP/cs.tsv" a_r 1)")	$(sig "$(col "$TMP/cs.tsv" a_r 2)")"
 			else
