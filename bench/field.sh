@@ -240,7 +240,7 @@ fit_verdict() {
 		printf "H=%.2g%s\n", h, ok ? "" : "(out)" }'
 }
 
-N_FILES=0 N_READ=0 N_RIGHT=0 N_WRONG=0 N_UNCHK=0 N_REFUSED=0 N_CONV=0 N_NOCONV=0 N_NOSOLVE=0
+N_REF_GWY=0 N_FILES=0 N_READ=0 N_RIGHT=0 N_WRONG=0 N_UNCHK=0 N_REFUSED=0 N_CONV=0 N_NOCONV=0 N_NOSOLVE=0
 if [ "$MODE" = path ]; then
 	echo "# field.sh: $(cd "$DIR" && pwd), manifest ${MANIFEST:-none}, tools $RC_BIN, $BOUND, -j $THREADS"
 	echo "# it: iterations (* not converged: see note); s: solve seconds; a_ext: a_r of the map and its 2x coarser copy through contact-stats"
@@ -262,6 +262,10 @@ for f in "$DIR"/*; do
 	rm -f "$TMP"/*
 	if ! read_check "$f" "$base"; then
 		N_REFUSED=$((N_REFUSED + 1))
+		if [ -n "$MANIFEST" ] && awk -F '\t' -v f="$base" '$1 == f && $2 == "yes" { y = 1 } END { exit !y }' "$MANIFEST"; then
+			N_REF_GWY=$((N_REF_GWY + 1))
+			R_NOTE="$R_NOTE (Gwyddion reads it)"
+		fi
 		if [ "$MODE" = path ]; then
 			emit "$base	${fmt:--}	-	refused	-	-	-	-	-	-	-	-	-	-	$R_NOTE"
 		else
@@ -355,7 +359,7 @@ for f in "$DIR"/*; do
 done
 
 if [ "$MODE" = path ]; then
-	echo "# files $N_FILES: read $N_READ (right $N_RIGHT, wrong $N_WRONG, unchecked $N_UNCHK), refused $N_REFUSED; solved: converged $N_CONV, not converged $N_NOCONV, not solved $N_NOSOLVE ($BOUND)"
+	echo "# files $N_FILES: read $N_READ (right $N_RIGHT, wrong $N_WRONG, unchecked $N_UNCHK), refused $N_REFUSED${MANIFEST:+ ($N_REF_GWY of them read by Gwyddion)}; solved: converged $N_CONV, not converged $N_NOCONV, not solved $N_NOSOLVE ($BOUND)"
 else
 	echo "# files $N_FILES: read $N_READ, refused $N_REFUSED, not levelled $N_NOSOLVE ($BOUND)"
 fi

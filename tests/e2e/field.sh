@@ -117,6 +117,6 @@ check "c.txt: refused" [ "$(col rows.tsv read 3)" = refused ]
 check "... with the reader's message" grep -q "'This' is not a number" rows.tsv
 it=$(col rows.tsv it_0.01 1)
 check "a.txt: p* = 0.01 converged (iterations $it, no *)" sh -c 'case $1 in ""|*[!0-9]*) exit 1 ;; esac' - "$it"
-check "the summary line" grep -q '^# files 3: read 2 (right 1, wrong 1, unchecked 0), refused 1; solved: converged 2, not converged 0' field.out
+check "the summary line" grep -q '^# files 3: read 2 (right 1, wrong 1, unchecked 0), refused 1 (0 of them read by Gwyddion); solved: converged 2, not converged 0' field.out
 
 summary
