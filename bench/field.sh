@@ -85,9 +85,11 @@ col() {
 		NR == r + 1 && k { print $k; exit }' "$1"
 }
 # msg FILE [NAME]: the last message line of a tool's stderr (its error,
-# after any warnings), without the tool and path prefixes and tabs
+# after any warnings), without the tool and path prefixes and tabs; a
+# long one keeps its start and its end (the why)
 msg() {
-	grep -v '^$' "$1" | tail -n 1 | sed "s|^[a-z-]*: ||; s|^[^ :]*$2: ||; s|	| |g" | cut -c1-160
+	grep -v '^$' "$1" | tail -n 1 | sed "s|^[a-z-]*: ||; s|^[^ :]*$2: ||; s|	| |g" |
+	    awk '{ print (length($0) > 220 ? substr($0, 1, 80) " ... " substr($0, length($0) - 134) : $0) }'
 }
 # sig X: X to 4 significant digits (a_r, seconds)
 sig() { awk -v x="$1" 'BEGIN { if (x == "" || x == "-") print "-"; else printf "%.4g\n", x }'; }
