@@ -145,6 +145,13 @@ $(O)/bench/peakrss: bench/peakrss.c
 accuracy: $(TOOLS)
 	$(MAKE) -C bench/accuracy BIN=$(abspath $(BIN))
 
+# the measured-data path over a folder of instrument files (bench/field.sh;
+# not part of check: FIELD=DIR, a corpus the user has; MANIFEST=FILE)
+.PHONY: field
+field: $(TOOLS)
+	@if [ -z "$(FIELD)" ]; then echo "make field: give the folder of instrument files: make field FIELD=DIR (a MANIFEST.tsv beside or in DIR is compared)" >&2; exit 2; fi
+	@RC_BIN=$(BIN) sh bench/field.sh $(if $(MANIFEST),-m "$(MANIFEST)") "$(FIELD)"
+
 demo: $(TOOLS)
 	@RC_BIN=$(BIN) sh data/demo.sh
 
