@@ -20,6 +20,8 @@
  * and reads; we read any netCDF the library opens (also netCDF-4).
  * Heights are written as stored: when the grid's height unit differs from
  * its lateral one, the lengths are converted to the height unit.
+ * A file without heights (netCDF-4 or plain HDF5 data sets) is read as
+ * channels, one per 1-D or 2-D numeric variable (read_data_sets).
  *
  * libnetcdf is loaded when a netCDF file is read or written (dlopen), not
  * when a program starts: with HDF5, curl and their TLS and Kerberos
@@ -50,7 +52,8 @@
 	X(open_mem) X(inq_varid) X(inq_var) X(inq_vardimid) X(inq_dimlen) \
 	X(get_var_double) X(close) X(create_mem) X(def_dim) X(def_var) \
 	X(put_att_double) X(put_att_int) X(put_att_text) X(_enddef) \
-	X(put_var_double) X(close_memio) X(abort) X(put_var_uchar)
+	X(put_var_double) X(close_memio) X(abort) X(put_var_uchar) \
+	X(inq_nvars) X(inq_dimname)
 
 struct ncapi {
 	void *handle;
@@ -265,6 +268,153 @@ default_fill(nc_type t)
 	}
 }
 
+/* A variable of numbers, 1-D or 2-D: its type and shape (ny = 1 for
+ * 1-D), checked against the bytes of the file; name for messages. */
+static int
+var_shape(const struct ncapi *api, int nc, int v, const char *name,
+    size_t len, int classic, nc_type *type, int *ndims, int dims[2],
+    size_t *nx, size_t *ny, rc_err *err)
+{
+	int st;
+
+	if ((st = api->inq_var(nc, v, NULL, type, ndims, NULL, NULL)) != NC_NOERR)
+		return nc_fail(api, err, name, st);
+	if (*type == NC_CHAR || *type == NC_STRING || *type >= NC_VLEN)
+		return rc_seterr(err, "netCDF: %s holds %s, not numbers", name,
+		    *type == NC_CHAR ? "characters" : *type == NC_STRING ?
+		    "strings" : "a user-defined type");
+	if (*ndims != 1 && *ndims != 2)
+		return rc_seterr(err, "netCDF: %s has %d dimensions, not 2 (a map) "
+		    "or 1 (a line scan)", name, *ndims);
+	*ny = 1;
+	if ((st = api->inq_vardimid(nc, v, dims)) != NC_NOERR ||
+	    (st = api->inq_dimlen(nc, dims[0], nx)) != NC_NOERR ||
+	    (*ndims == 2 && (st = api->inq_dimlen(nc, dims[1], ny)) != NC_NOERR))
+		return nc_fail(api, err, name, st);
+	if (*nx == 0 || *ny == 0)
+		return rc_seterr(err, "netCDF: %s has no points (%zu x %zu)", name,
+		    *nx, *ny);
+	if (rc_grid_check_shape(*nx, *ny, 1, 1, err) != 0)
+		return -1;
+	/* A classic file stores every value; a netCDF-4 one may compress,
+	 * by at most about 1000 (deflate).  Either way a lying header costs
+	 * no memory. */
+	if (classic ? *nx * *ny > len : *nx * *ny / 1024 > len)
+		return rc_seterr(err, "netCDF: %s of %zux%zu cannot fit in %zu "
+		    "bytes", name, *nx, *ny, len);
+	return 0;
+}
+
+/* Variable v (nx x ny in the file, y fastest) into g (x fastest), its
+ * _FillValue, missing_value or netCDF's default fill as NaN; t holds
+ * nx * ny doubles. */
+static int
+var_values(const struct ncapi *api, int nc, int v, const char *name,
+    nc_type type, double *t, rc_grid *g, rc_err *err)
+{
+	size_t nx = g->nx, ny = g->ny;
+	double fill, missing;
+	int st;
+
+	if ((st = api->get_var_double(nc, v, t)) != NC_NOERR)
+		return nc_fail(api, err, name, st);
+	if (att_double(api, nc, v, "_FillValue", &fill) != 0)
+		fill = default_fill(type);
+	if (att_double(api, nc, v, "missing_value", &missing) != 0)
+		missing = NAN;
+	for (size_t i = 0; i < nx; i++)
+		for (size_t j = 0; j < ny; j++) {
+			double z = t[i * ny + j];
+
+			g->z[j * nx + i] = z == fill || z == missing ? NAN : z;
+		}
+	return 0;
+}
+
+/* NaN points of g missing (valid = 0). */
+static int
+mark_missing(rc_grid *g, rc_err *err)
+{
+	size_t n = g->nx * g->ny;
+
+	for (size_t k = 0; k < n; k++)
+		if (isnan(g->z[k])) {
+			if (g->valid == NULL) {
+				if ((g->valid = rc_malloc(n, err)) == NULL)
+					return -1;
+				memset(g->valid, 1, n);
+			}
+			g->valid[k] = 0;
+		}
+	return 0;
+}
+
+/* A file without heights (a netCDF-4 or plain HDF5 file of data sets):
+ * every 1-D or 2-D numeric variable that is not a coordinate variable
+ * (x(x)) is a channel titled by its name, in the file's order.  No
+ * physical size (-L or 1, as .npy); the values' unit is the variable's
+ * attribute unit or units, else they are unitless ("1"), which no length
+ * reading takes for heights unless --z-unit says what they are. */
+static int
+read_data_sets(const struct ncapi *api, int nc, size_t len, int classic, const rc_read_opts *o, rc_chanset *s,
+    rc_err *err)
+{
+	double lx = o != NULL && o->have_l ? o->lx : 1;
+	double ly = o != NULL && o->have_l ? o->ly : 1;
+	int nvars, st, ndims, dims[NC_MAX_VAR_DIMS];
+	size_t before = s->n, nx, ny;
+	char name[NC_MAX_NAME + 1], dname[NC_MAX_NAME + 1], zunit[64];
+	nc_type type;
+
+	if ((st = api->inq_nvars(nc, &nvars)) != NC_NOERR)
+		return nc_fail(api, err, "variables", st);
+	for (int v = 0; v < nvars; v++) {
+		double *t;
+		rc_grid *g;
+
+		if ((st = api->inq_var(nc, v, name, &type, &ndims, dims, NULL)) !=
+		    NC_NOERR)
+			return nc_fail(api, err, "variables", st);
+		if (type == NC_CHAR || type == NC_STRING || type >= NC_VLEN ||
+		    (ndims != 1 && ndims != 2))
+			continue;
+		if (ndims == 1 && api->inq_dimname(nc, dims[0], dname) == NC_NOERR &&
+		    strcmp(dname, name) == 0)
+			continue;	/* a coordinate variable */
+		if (api->inq_dimlen(nc, dims[0], &nx) == NC_NOERR && (nx == 0 ||
+		    (ndims == 2 && api->inq_dimlen(nc, dims[1], &ny) == NC_NOERR &&
+		    ny == 0)))
+			continue;	/* an unlimited dimension never written */
+		if (var_shape(api, nc, v, name, len, classic, &type, &ndims, dims,
+		    &nx, &ny, err) != 0)
+			return -1;
+		if ((t = rc_malloc(nx * ny * sizeof(double), err)) == NULL)
+			return -1;
+		if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL) {
+			free(t);
+			return -1;
+		}
+		if (att_text(api, nc, v, "unit", zunit, sizeof(zunit)) != 0 &&
+		    att_text(api, nc, v, "units", zunit, sizeof(zunit)) != 0)
+			strcpy(zunit, "1");
+		if (rc__io_set_unit(g->z_unit, zunit, err) != 0 ||
+		    var_values(api, nc, v, name, type, t, g, err) != 0 ||
+		    mark_missing(g, err) != 0) {
+			free(t);
+			rc_grid_free(g);
+			return -1;
+		}
+		free(t);
+		if (rc__chanset_add(s, g, name, err) != 0)
+			return -1;
+	}
+	if (s->n == before)
+		return rc_seterr(err, "netCDF file has neither the variable "
+		    "'heights' (the contact.engineering convention) nor a 1-D or "
+		    "2-D numeric variable");
+	return 0;
+}
+
 /* Long: the netCDF variables and attributes in the order the library
  * hands them out, each checked where read. */
 int
@@ -273,7 +423,7 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 {
 	int nc, hv, xv = -1, yv = -1, mv, ndims, dims[2], st, r = -1;
 	size_t nx, ny, n;
-	double lx = 1, ly = 1, per = 0, fill, missing, *t = NULL;
+	double lx = 1, ly = 1, per = 0, *t = NULL;
 	char unit[64] = "", zunit[64] = "";
 	int classic = len >= 3 && memcmp(buf, "CDF", 3) == 0;
 	nc_type type;
@@ -302,43 +452,13 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		return -1;
 	}
 	if (api->inq_varid(nc, "heights", &hv) != NC_NOERR) {
-		rc_seterr(err, "netCDF file has no variable 'heights' (the "
-		    "contact.engineering convention)");
+		r = read_data_sets(api, nc, len, classic, o, s, err);
 		goto out;
 	}
-	if ((st = api->inq_var(nc, hv, NULL, &type, &ndims, NULL, NULL)) != NC_NOERR)
-		goto nc;
-	if (type == NC_CHAR || type == NC_STRING || type >= NC_VLEN) {
-		rc_seterr(err, "netCDF: heights holds %s, not numbers",
-		    type == NC_CHAR ? "characters" : type == NC_STRING ? "strings" :
-		    "a user-defined type");
-		goto out;
-	}
-	if (ndims != 1 && ndims != 2) {
-		rc_seterr(err, "netCDF: heights has %d dimensions, not 2 (a map) "
-		    "or 1 (a line scan)", ndims);
-		goto out;
-	}
-	ny = 1;
-	if ((st = api->inq_vardimid(nc, hv, dims)) != NC_NOERR ||
-	    (st = api->inq_dimlen(nc, dims[0], &nx)) != NC_NOERR ||
-	    (ndims == 2 && (st = api->inq_dimlen(nc, dims[1], &ny)) != NC_NOERR))
-		goto nc;
-	if (nx == 0 || ny == 0) {
-		rc_seterr(err, "netCDF: heights has no points (%zu x %zu)", nx, ny);
-		goto out;
-	}
-	if (rc_grid_check_shape(nx, ny, 1, 1, err) != 0)
+	if (var_shape(api, nc, hv, "heights", len, classic, &type, &ndims, dims,
+	    &nx, &ny, err) != 0)
 		goto out;
 	n = nx * ny;
-	/* A classic file stores every value; a netCDF-4 one may compress,
-	 * by at most about 1000 (deflate).  Either way a lying header costs
-	 * no memory. */
-	if (classic ? n > len : n / 1024 > len) {
-		rc_seterr(err, "netCDF: heights of %zux%zu cannot fit in %zu bytes",
-		    nx, ny, len);
-		goto out;
-	}
 	if (api->inq_varid(nc, "x", &xv) == NC_NOERR) {
 		if (att_double(api, nc, xv, "length", &lx) == 0 && ndims == 1)
 			ly = lx / (double)nx;
@@ -352,30 +472,23 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		strcpy(zunit, unit);
 	if ((t = rc_malloc(n * sizeof(double), err)) == NULL)
 		goto out;
-	if ((st = api->get_var_double(nc, hv, t)) != NC_NOERR)
-		goto nc;
 	if ((g = rc__io_grid_alloc(nx, ny, lx, ly, err)) == NULL)
 		goto out;
 	if ((unit[0] != '\0' && rc__io_set_unit(g->unit, unit, err) != 0) ||
 	    (zunit[0] != '\0' && rc__io_set_unit(g->z_unit, zunit, err) != 0))
 		goto out;
 	g->periodic = per != 0;
-	for (size_t i = 0; i < nx; i++)
-		for (size_t j = 0; j < ny; j++)
-			g->z[j * nx + i] = t[i * ny + j];
-	if (att_double(api, nc, hv, "_FillValue", &fill) != 0)
-		fill = default_fill(type);
-	if (att_double(api, nc, hv, "missing_value", &missing) != 0)
-		missing = NAN;
+	if (var_values(api, nc, hv, "heights", type, t, g, err) != 0)
+		goto out;
 	/* SurfaceTopography's mask: non-zero where a point is missing. */
 	if (api->inq_varid(nc, "mask", &mv) == NC_NOERR) {
 		int mdims[2], mnd;
 
-		if ((st = api->inq_var(nc, mv, NULL, NULL, &mnd, mdims, NULL)) !=
+		if ((st = api->inq_var(nc, mv, NULL, NULL, &mnd, NULL, NULL)) !=
 		    NC_NOERR)
 			goto nc;
-		if (mnd != ndims || mdims[0] != dims[0] ||
-		    (ndims == 2 && mdims[1] != dims[1])) {
+		if (mnd != ndims || api->inq_vardimid(nc, mv, mdims) != NC_NOERR ||
+		    mdims[0] != dims[0] || (ndims == 2 && mdims[1] != dims[1])) {
 			rc_seterr(err, "netCDF: mask does not have the dimensions of "
 			    "heights");
 			goto out;
@@ -389,16 +502,8 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 				if (t[i * ny + j] != 0)
 					g->z[j * nx + i] = NAN;
 	}
-	for (size_t k = 0; k < n; k++)
-		if (isnan(g->z[k]) || g->z[k] == fill || g->z[k] == missing) {
-			if (g->valid == NULL) {
-				if ((g->valid = rc_malloc(n, err)) == NULL)
-					goto out;
-				memset(g->valid, 1, n);
-			}
-			g->valid[k] = 0;
-			g->z[k] = NAN;
-		}
+	if (mark_missing(g, err) != 0)
+		goto out;
 	r = rc__chanset_add(s, g, "heights", err);
 	g = NULL;
 	goto out;

@@ -12,7 +12,7 @@
 cd "$T_TMP" || exit 1
 
 if ! command -v ncgen >/dev/null 2>&1 || ! command -v ncdump >/dev/null 2>&1; then
-	skip 25 "ncgen/ncdump not installed (Debian package netcdf-bin)"
+	skip 39 "ncgen/ncdump not installed (Debian package netcdf-bin)"
 	summary
 	exit 0
 fi
@@ -159,4 +159,51 @@ ncdump -h l2.nc > l2.cdl
 check "written line scan: only dimension x" [ "$(sed -n '/^dimensions:/,/^variables:/p' l2.cdl | grep -c ' = ')" -eq 1 ]
 check "written line scan: heights(x)" grep -q 'double heights(x) ;' l2.cdl
 check "written line scan: x:length = 8" grep -q 'x:length = 8. ;' l2.cdl
+# Data sets without heights (netCDF-4/HDF5, as multiple_data_sets.h5):
+# every 1-D or 2-D numeric variable but a coordinate variable (c(c)) is
+# a channel named by the variable, unitless unless an attribute unit or
+# units says otherwise, of no physical size (-L or 1, as .npy).
+cat > ds.cdl <<'CDL'
+netcdf ds {
+dimensions:
+	a = 2 ;
+	b = 3 ;
+	c = 4 ;
+	d = 2 ;
+variables:
+	double c(c) ;
+	double data1(a, b) ;
+	float data2(c, d) ;
+data:
+	c = 0, 1, 2, 3 ;
+	data1 = 1, 2, 3, 4, 5, 6 ;
+	data2 = 0.5, -1.25, 2, 0, 3.75, -0.5, 1, 0.25 ;
+}
+CDL
+ncgen -k nc4 -o ds.h5 ds.cdl
+surfstat --channels ds.h5 > ds.lst
+check "data sets: two channels, c(c) is a coordinate" [ "$(sed 1d ds.lst | wc -l)" -eq 2 ]
+check "data sets: data1, 2 x 3, L 1, unitless" [ "$(awk -F'\t' 'NR == 2 { print $2, $3, $4, $5, $6, $7, $8 }' ds.lst)" = "data1 2 3 1 1 - 1" ]
+check "data sets: data2, 4 x 2, unitless" [ "$(awk -F'\t' 'NR == 3 { print $2, $3, $4, $8 }' ds.lst)" = "data2 4 2 1" ]
+check_status "data sets: unitless values are no heights by default" 1 surfstat ds.h5
+check "data sets: the refusal names --z-unit" grep -q "unitless.*--z-unit" "$T_TMP/stderr"
+check_status "data sets: nor when picked" 1 surfstat --channel 2 ds.h5
+# hrms = sqrt<(h - mean)^2> from the CDL's values
+hrms_of() { echo "$1" | tr ',' '\n' | awk '{ h[NR] = $1; s += $1 } END { m = s / NR; for (k = 1; k <= NR; k++) q += (h[k] - m)^2; printf "%.17g\n", sqrt(q / NR) }'; }
+surfwarp -q --channel 1 --z-unit nm ds.h5 -o d1.txt
+check "data sets: --channel 1 --z-unit nm, the values (rows are y)" [ "$(values d1.txt)" = "1 4 2 5 3 6" ]
+surfstat -q --channel data1 --z-unit nm -L 2x3 ds.h5 > d1.tsv
+check_rel "data sets: data1 hrms" "$(col_of d1.tsv hrms)" "$(hrms_of 1,2,3,4,5,6)" 1e-12
+check "data sets: -L 2x3 is its size" [ "$(col_of d1.tsv lx) $(col_of d1.tsv ly)" = "2 3" ]
+surfwarp -q --channel data2 --z-unit um ds.h5 -o d2.txt
+check "data sets: --channel data2, the float values" [ "$(values d2.txt)" = "0.5 2 3.75 1 -1.25 0 -0.5 0.25" ]
+surfstat -q --channel data2 --z-unit um ds.h5 > d2.tsv
+check_rel "data sets: data2 hrms" "$(col_of d2.tsv hrms)" "$(hrms_of 0.5,-1.25,2,0,3.75,-0.5,1,0.25)" 1e-12
+# a unit attribute makes data2 heights: the default channel, no --z-unit
+sed 's/^	float data2(c, d) ;/&\n		data2:units = "um" ;/' ds.cdl > du.cdl
+ncgen -k nc4 -o du.h5 du.cdl
+check "data sets: units = um listed" [ "$(surfstat --channels du.h5 | awk -F'\t' 'NR == 3 { print $8 }')" = um ]
+surfstat -q du.h5 > du.tsv
+check "data sets: the channel in a length unit is the default" [ "$(col_of du.tsv nx) $(col_of du.tsv ny)" = "4 2" ]
+check_rel "data sets: its hrms" "$(col_of du.tsv hrms)" "$(col_of d2.tsv hrms)" 0
 summary

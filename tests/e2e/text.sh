@@ -51,9 +51,10 @@ printf 'This is nonsense. Should raise CannotDetectFileFormat.' > n.txt
 refused "prose is not a height file" 'is text and no numbers follow' surfstat n.txt
 
 if command -v ncgen >/dev/null 2>&1; then
-	printf 'netcdf d {\ndimensions:\n a = 2 ;\n b = 3 ;\nvariables:\n double dataset1(a, b) ;\ndata:\n dataset1 = 1, 2, 3, 4, 5, 6 ;\n}\n' > d.cdl
+	# 2-D data sets are channels (netcdf.sh); a 3-D one alone is not
+	printf 'netcdf d {\ndimensions:\n a = 2 ;\n b = 3 ;\n c = 1 ;\nvariables:\n double dataset1(a, b, c) ;\ndata:\n dataset1 = 1, 2, 3, 4, 5, 6 ;\n}\n' > d.cdl
 	ncgen -k nc4 -o d.h5 d.cdl
-	refused "HDF5 data sets without the netCDF layout: said, with h5ls" \
+	refused "HDF5 with no 1-D or 2-D data set: said, with h5ls" \
 		'an HDF5 file .*h5ls' surfstat d.h5
 fi
 summary
