@@ -55,7 +55,8 @@ rc__cg_next(rc_solver *s, double p, double bound, long it,
     double (*check)(rc_solver *, double), double *residual, int *status)
 {
 	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-	    (s->opts.stop && *s->opts.stop)) {
+	    (s->opts.stop && *s->opts.stop) ||
+	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
 		*residual = check(s, p);
 		if (*residual <= s->opts.tol)
 			*status = 0;

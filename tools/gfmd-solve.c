@@ -130,21 +130,46 @@ resume_command(int argc, char **argv, const char *path)
 	return cmd;
 }
 
+/* The progress line on a terminal: shown once a solve has run
+ * PROGRESS_AFTER seconds, redrawn in place at most every PROGRESS_EVERY,
+ * erased when the solve ends (progress_clear). */
+#define PROGRESS_AFTER	2.0
+#define PROGRESS_EVERY	0.25
+
 struct progress {
 	const char *name;
 	double p_star, p;
-	int shown;
+	double start, drawn;	/* the solve's start, the last drawing */
+	int width;		/* characters drawn, 0: none */
 };
 
 static void
 show_progress(void *ctx, long iter, double residual, double contact_fraction)
 {
 	struct progress *pr = ctx;
+	double now = rc_clock();
+	int w;
 
-	fprintf(stderr, "\r%s: p* = %-10.4g p = %-10.4g iteration %-8ld "
-	    "residual %-10.3e a_r %.6f ", pr->name, pr->p_star, pr->p, iter,
-	    residual, contact_fraction);
-	pr->shown = 1;
+	if (now - pr->start < PROGRESS_AFTER ||
+	    (pr->width > 0 && now - pr->drawn < PROGRESS_EVERY))
+		return;
+	w = fprintf(stderr, "\r%s: p* = %.4g (p = %.4g): iteration %ld, "
+	    "residual %.3e, a_r %.4f, %.0f s", pr->name, pr->p_star, pr->p,
+	    iter, residual, contact_fraction, now - pr->start);
+	/* blank what a longer line left */
+	if (w > 0 && w < pr->width)
+		fprintf(stderr, "%*s", pr->width - w, "");
+	if (w > pr->width)
+		pr->width = w;
+	pr->drawn = now;
+}
+
+static void
+progress_clear(struct progress *pr)
+{
+	if (pr->width > 0)
+		fprintf(stderr, "\r%*s\r", pr->width, "");
+	pr->width = 0;
 }
 
 /* Long: the help text, one printf. */
@@ -517,7 +542,7 @@ solver_setup(struct run *r)
 	o->so.modulus = o->modulus;
 	o->so.stop = (volatile int *)&stop_flag;
 	r->pr.name = r->t.name;
-	r->pr.shown = 0;
+	r->pr.width = 0;
 	if (!r->t.quiet && isatty(STDERR_FILENO)) {
 		o->so.progress = show_progress;
 		o->so.progress_ctx = &r->pr;
@@ -687,6 +712,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 	gfmd_pressure(o, k, r->gbar, p, p_star);
 	r->pr.p = *p;
 	r->pr.p_star = *p_star;
+	r->pr.start = rc_clock();
 	/* A periodic checkpoint stops the solve through o->so.stop; it is
 	 * saved and the same pressure goes on from where it stopped. */
 	for (;;) {
@@ -696,10 +722,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 			*p_star = r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
 		} else
 			st = rc_solver_solve(r->solver, *p, res, &err);
-		if (r->pr.shown) {
-			fputc('\n', stderr);
-			r->pr.shown = 0;
-		}
+		progress_clear(&r->pr);
 		if (st < 0) {
 			rc_atomic_abort(&r->out);
 			if (o->napproach)
@@ -761,6 +784,7 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .p_adh = rc_solver_adhesive_pressure(s),
 		    .a_attr = rc_solver_attractive_fraction(s),
 		    .l_adh_dx = r->l_adh_dx, .separated = res->separated,
+		    .stalled = res->stalled ? o->so.stall_window : 0,
 		    .nx = h->nx, .ny = h->ny };
 		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
 		    &r->table, r->out.fp, &r->nunconverged, &err);
