@@ -91,13 +91,18 @@
  * grow slowly under a positive power until it throws the state back
  * (seen on measured maps at a_r ~ 0.02: the residual fell tenfold, then
  * jumped back every ~550 iterations, 17,102 iterations without
- * converging on a 768x576 map).  Measured (gfmd-solve -p 0.01,0.05, tol
- * 1e-6, free, 256^2 crops of SurfaceTopography's opd, bcrf, metropro,
- * sur, di examples and surfgen's default): dt_max 2 (before): 2 of 12
- * pressures beyond 1500 iterations; 1: 2; 0.5: 31-157 iterations; 0.3:
- * 48-110, the synthetic 51 and 48 (51 and 57 with 2); 0.2: 45-103, but
- * 58-64 on the synthetic. */
-#define SIGMA_DT_MAX	0.3
+ * converging on a 768x576 map).  Too small a step slows the lowest
+ * modes (frequency >= 1) instead.  Measured (gfmd-solve -p 0.01,0.05,
+ * tol 1e-6, free; SurfaceTopography's examples levelled and filled):
+ * dt_max 2 (before): 256^2 crops of opd, bcrf, metropro, sur, di, 2 of
+ * 12 pressures beyond 1500 iterations, the whole opd, metropro and bcrf
+ * maps not converged in minutes; 0.3: crops 48-110, but metropro
+ * (640x480) 1142 and 194, bcrf (960x600) 893 and 333; 0.2: crops 45-103,
+ * metropro 115 and 165, bcrf 401 and 205, surfgen's default 256^2 64 and
+ * 58 (51 and 57 with 2); 0.12: metropro 365 at p* = 0.01.  The best step
+ * falls with the grid (the spots' longest waves grow with it): a fixed
+ * one is a compromise, and bcrf at p* = 0.01 still needs 401. */
+#define SIGMA_DT_MAX	0.2
 
 /* a = K f (mean mode 0) into the periodic operator's real buffer. */
 static double *
