@@ -96,12 +96,14 @@
  * tol 1e-6, free; SurfaceTopography's examples levelled and filled):
  * dt_max 2 (before): 256^2 crops of opd, bcrf, metropro, sur, di, 2 of
  * 12 pressures beyond 1500 iterations, the whole opd, metropro and bcrf
- * maps not converged in minutes; 0.3: crops 48-110, but metropro
- * (640x480) 1142 and 194, bcrf (960x600) 893 and 333; 0.2: crops 45-103,
- * metropro 115 and 165, bcrf 401 and 205, surfgen's default 256^2 64 and
- * 58 (51 and 57 with 2); 0.12: metropro 365 at p* = 0.01.  The best step
- * falls with the grid (the spots' longest waves grow with it): a fixed
- * one is a compromise, and bcrf at p* = 0.01 still needs 401. */
+ * maps not converged in minutes; 0.3: crops 48-110, whole maps
+ * metropro (640x480) 1142 and 194, bcrf (960x600) 893 and 333; 0.2 (and
+ * a start at 1): crops 45-103, metropro 365 and 166, bcrf 401 and 205,
+ * sur (563x484) 254 and 111, opd, di and al3d 54-100, surfgen's default
+ * 256^2 64 and 58 (51 and 57 with 2), the same contact sets as CG; 0.12:
+ * metropro 365 at p* = 0.01.  The best step falls with the grid (the
+ * spots' longest waves grow with it): a fixed one is a compromise, and
+ * metropro and bcrf at p* = 0.01 still take over 300 iterations. */
 #define SIGMA_DT_MAX	0.2
 
 /* a = K f (mean mode 0) into the periodic operator's real buffer. */
@@ -140,8 +142,9 @@ int
 rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
-	double dt = fmin(RC_FIRE_DT_START, SIGMA_DT_MAX);
-	double alpha = RC_FIRE_ALPHA_START;
+	/* the start at solver_fire.c's 1, stable while all points are
+	 * active (the start: uniform pressure), as measured below */
+	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
 	double residual = HUGE_VAL;
 	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
 	double k_max = rc__stiffness_max(s), pn = p * (double)n;
