@@ -61,6 +61,7 @@ rc_solver_defaults(rc_solver_opts *o)
 	o->modulus = 1;
 	o->tol = 1e-6;
 	o->max_iter = 100000;
+	o->stall_window = RC_STALL_WINDOW;
 	o->fft_effort = RC_FFT_ESTIMATE;
 	o->fft_block_points = RC_FFT_BLOCKED_POINTS;
 }
@@ -171,6 +172,10 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 		rc_seterr(err, "a finite thickness has the continuum kernel only: "
 		    "the pixel kernel would need the layer's factor on every "
 		    "image of its sum (elastic.h)");
+		return NULL;
+	}
+	if (o->stall_window < 0) {
+		rc_seterr(err, "stall_window must not be negative");
 		return NULL;
 	}
 	if (o->max_iter < 1) {
@@ -322,6 +327,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	int r;
 
 	memset(res, 0, sizeof(*res));
+	s->watch.stalled = 0;
 	if (rc_solver_opts_adhesive(&s->opts)) {
 		if (!isfinite(p))
 			return rc_seterr(err, "pressure must be finite");
@@ -352,6 +358,7 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	else
 		res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
+	res->stalled = r == 1 && s->watch.stalled;
 	return r;
 }
 

@@ -68,7 +68,10 @@ eval(struct trial *tr, double x, double *f, rc_err *err)
 	if (st > 0)
 		tr->status = 1;
 	*f = rc_solver_approach(tr->s) - tr->delta;
-	return tr->s->opts.stop && *tr->s->opts.stop ? 1 : 0;
+	/* a stalled trial ends the search as a stop does */
+	if (r.stalled)
+		tr->total->stalled = 1;
+	return (tr->s->opts.stop && *tr->s->opts.stop) || r.stalled ? 1 : 0;
 }
 
 /* Adhesion: FIRE with the mean height held (solver_fire_adh.c; a half
@@ -90,6 +93,7 @@ adhesive_approach(rc_solver *s, double delta, double *pressure,
 	if (!s->free_bc && !layer && !(delta < s->top - sum / (double)s->n))
 		return rc_seterr(err, "approach %g reaches full contact "
 		    "(max h - <h> = %g)", delta, s->top - sum / (double)s->n);
+	s->watch.stalled = 0;
 	if ((r = rc__fire_adh_solve(s, layer ? RC__ADH_SUBSTRATE :
 	    RC__ADH_LEVEL, &p, delta, res, err)) < 0)
 		return -1;
@@ -97,6 +101,7 @@ adhesive_approach(rc_solver *s, double delta, double *pressure,
 	res->seconds = rc_clock() - t0;
 	res->fft_pairs = 0.5 * (double)(s->el.n_r2c + s->el.n_c2r - transforms);
 	res->converged = r == 0;
+	res->stalled = r == 1 && s->watch.stalled;
 	return r;
 }
 

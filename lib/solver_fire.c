@@ -335,7 +335,8 @@ fire_done(rc_solver *s, long it, double residual, size_t n_contact,
 		*status = 0;
 		return 1;
 	}
-	if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop))
+	if (it >= s->opts.max_iter || (s->opts.stop && *s->opts.stop) ||
+	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, residual))
 		return 1;
 	if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 		s->opts.progress(s->opts.progress_ctx, it, residual,

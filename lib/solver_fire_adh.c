@@ -302,7 +302,9 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 			res->separated = 1;
 			break;
 		}
-		if (it >= opts->max_iter || (opts->stop && *opts->stop))
+		if (it >= opts->max_iter || (opts->stop && *opts->stop) ||
+		    rc__watch_stalled(w->watch, opts->stall_window, it,
+		    residual))
 			break;
 		if (opts->progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 			opts->progress(opts->progress_ctx, it, residual,
@@ -377,7 +379,7 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
     rc_solve_result *res, rc_err *err)
 {
 	rc__adh_view w = { &s->el, s->n, (double)s->n, s->u, s->fire_vel,
-	    s->sigma, s->height, s->contact, 0, s->k_uniform };
+	    s->sigma, s->height, s->contact, 0, s->k_uniform, &s->watch };
 	double target = 0, p = *pp;
 	rc_adhesion law;
 	size_t k;

@@ -180,7 +180,7 @@ rc__fire_adh_free_solve(rc_solver *s, const rc_adhesion *law, int control,
 {
 	rc_adh_pad *pad = &s->pad;
 	rc__adh_view w = { &s->el, pad->n, (double)s->n, pad->u, pad->v,
-	    pad->f, pad->h, pad->contact, 0, 0 };
+	    pad->f, pad->h, pad->contact, 0, 0, &s->watch };
 	unsigned long transforms = s->el.n_r2c + s->el.n_c2r;
 	size_t k, nx = s->nx, px = 2 * nx;
 	double c, p, spread = (double)pad->n / (double)s->n;

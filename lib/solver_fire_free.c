@@ -32,7 +32,8 @@
  *     0: the mean of sigma is the load, held by step 5), then a = 0 off
  *     the active set.
  *  4. FIRE 2.0 as in solver_fire.c, with its parameters (same meaning:
- *     time in units of the common period), P = f.v.
+ *     time in units of the common period) except the largest step
+ *     (SIGMA_DT_MAX below: why), P = f.v.
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).
@@ -79,6 +80,32 @@
  * iterations.  Without a hardness the cap is infinite: no effect. */
 #define TRUST	0.5
 
+/* FIRE's largest time step on pressures (solver_fire.c's RC_FIRE_DT_MAX,
+ * 2, is for heights).  Why smaller: the mass K makes the frequency 1 for
+ * every mode only when every point is active; on an active set A the
+ * squared frequencies are the eigenvalues of K_AA G_AA, which are at
+ * least 1 (G_AA^-1, the Schur complement of K, is at most K_AA) and grow
+ * without bound as A thins out into scattered spots, whose collective
+ * long-wave modes K_AA (local) sees far stiffer than G_AA (long-ranged)
+ * does.  A step past the stability limit 2/omega_max lets such a mode
+ * grow slowly under a positive power until it throws the state back
+ * (seen on measured maps at a_r ~ 0.02: the residual fell tenfold, then
+ * jumped back every ~550 iterations, 17,102 iterations without
+ * converging on a 768x576 map).  Too small a step slows the lowest
+ * modes (frequency >= 1) instead.  Measured (gfmd-solve -p 0.01,0.05,
+ * tol 1e-6, free; SurfaceTopography's examples levelled and filled):
+ * dt_max 2 (before): 256^2 crops of opd, bcrf, metropro, sur, di, 2 of
+ * 12 pressures beyond 1500 iterations, the whole opd, metropro and bcrf
+ * maps not converged in minutes; 0.3: crops 48-110, whole maps
+ * metropro (640x480) 1142 and 194, bcrf (960x600) 893 and 333; 0.2 (and
+ * a start at 1): crops 45-103, metropro 365 and 166, bcrf 401 and 205,
+ * sur (563x484) 254 and 111, opd, di and al3d 54-100, surfgen's default
+ * 256^2 64 and 58 (51 and 57 with 2), the same contact sets as CG; 0.12:
+ * metropro 365 at p* = 0.01.  The best step falls with the grid (the
+ * spots' longest waves grow with it): a fixed one is a compromise, and
+ * metropro and bcrf at p* = 0.01 still take over 300 iterations. */
+#define SIGMA_DT_MAX	0.2
+
 /* a = K f (mean mode 0) into the periodic operator's real buffer. */
 static double *
 stiffness_times(rc_solver *s, const double *f)
@@ -99,7 +126,8 @@ stop_rule(rc_solver *s, double p, double bound, long it,
 	if (!s->free_bc)
 		return rc__cg_next(s, p, bound, it, check, residual, status);
 	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-	    (s->opts.stop && *s->opts.stop)) {
+	    (s->opts.stop && *s->opts.stop) ||
+	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
 		*residual = check(s, p);
 		if (*residual <= s->opts.tol)
 			*status = 0;
@@ -114,6 +142,8 @@ int
 rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
+	/* the start at solver_fire.c's 1, stable while all points are
+	 * active (the start: uniform pressure), as measured below */
 	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
 	double residual = HUGE_VAL;
 	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
@@ -164,7 +194,7 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		restart = !(power > 0);
 		if (!restart) {
 			if (++npos > RC_FIRE_N_MIN) {
-				dt = fmin(dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
+				dt = fmin(dt * RC_FIRE_F_INC, SIGMA_DT_MAX);
 				alpha *= RC_FIRE_F_ALPHA;
 			}
 		} else {

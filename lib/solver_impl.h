@@ -21,6 +21,38 @@ typedef struct rc_adh_pad {
 	int valid;		/* u holds a state */
 } rc_adh_pad;
 
+/* The watch over one solve: whether it stalls (opts.stall_window: the
+ * best convergence measure must halve within every window of that many
+ * iterations, counted from the first one's).  Each loop calls
+ * rc__watch_stalled once per iteration with the measure it stops on;
+ * iteration 0 starts it anew. */
+typedef struct rc__watch {
+	long mark_it;		/* start of the current window */
+	double mark_best;	/* the best measure at that start */
+	double best;		/* the best measure so far */
+	int stalled;
+} rc__watch;
+
+static inline int
+rc__watch_stalled(rc__watch *w, long window, long it, double measure)
+{
+	if (it == 0) {
+		w->mark_it = 0;
+		w->mark_best = w->best = measure;
+		w->stalled = 0;
+		return 0;
+	}
+	if (measure < w->best)
+		w->best = measure;
+	if (window <= 0 || it - w->mark_it < window)
+		return 0;
+	if (!(w->best <= 0.5 * w->mark_best))
+		return w->stalled = 1;
+	w->mark_it = it;
+	w->mark_best = w->best;
+	return 0;
+}
+
 struct rc_solver {
 	rc_solver_opts opts;
 	size_t nx, ny, n;
@@ -48,6 +80,7 @@ struct rc_solver {
 	/* adhesion (solver_fire_adh.c): p_adh and a_attr of the solution */
 	double p_adh, a_attr;
 	rc_adh_pad pad;		/* adhesion on free boundaries */
+	rc__watch watch;	/* the current solve's stall watch */
 };
 
 /* The number of points of the whole grid: s->n, or the global count of a
@@ -90,6 +123,7 @@ typedef struct rc__adh_view {
 	unsigned char *contact;
 	double mass0;
 	double spring;
+	rc__watch *watch;
 } rc__adh_view;
 struct rc_adhesion;
 int rc__adh_loop(const rc__adh_view *w, const struct rc_adhesion *law,

@@ -130,21 +130,46 @@ resume_command(int argc, char **argv, const char *path)
 	return cmd;
 }
 
+/* The progress line on a terminal: shown once a solve has run
+ * PROGRESS_AFTER seconds, redrawn in place at most every PROGRESS_EVERY,
+ * erased when the solve ends (progress_clear). */
+#define PROGRESS_AFTER	2.0
+#define PROGRESS_EVERY	0.25
+
 struct progress {
 	const char *name;
 	double p_star, p;
-	int shown;
+	double start, drawn;	/* the solve's start, the last drawing */
+	int width;		/* characters drawn, 0: none */
 };
 
 static void
 show_progress(void *ctx, long iter, double residual, double contact_fraction)
 {
 	struct progress *pr = ctx;
+	double now = rc_clock();
+	int w;
 
-	fprintf(stderr, "\r%s: p* = %-10.4g p = %-10.4g iteration %-8ld "
-	    "residual %-10.3e a_r %.6f ", pr->name, pr->p_star, pr->p, iter,
-	    residual, contact_fraction);
-	pr->shown = 1;
+	if (now - pr->start < PROGRESS_AFTER ||
+	    (pr->width > 0 && now - pr->drawn < PROGRESS_EVERY))
+		return;
+	w = fprintf(stderr, "\r%s: p* = %.4g (p = %.4g): iteration %ld, "
+	    "residual %.3e, a_r %.4f, %.0f s", pr->name, pr->p_star, pr->p,
+	    iter, residual, contact_fraction, now - pr->start);
+	/* blank what a longer line left */
+	if (w > 0 && w < pr->width)
+		fprintf(stderr, "%*s", pr->width - w, "");
+	if (w > pr->width)
+		pr->width = w;
+	pr->drawn = now;
+}
+
+static void
+progress_clear(struct progress *pr)
+{
+	if (pr->width > 0)
+		fprintf(stderr, "\r%*s\r", pr->width, "");
+	pr->width = 0;
 }
 
 /* Long: the help text, one printf. */
@@ -157,7 +182,7 @@ usage(void)
 "           [--kernel continuum|pixel]\n"
 "           [--thickness D --poisson NU [--substrate bonded|slip]]\n"
 "           [--adhesion DGAMMA --range RHO [--law exponential|dugdale]]\n"
-"           [--tol TOL] [--max-iter N] [--alpha A] [--fd]\n"
+"           [--tol TOL] [--max-iter N] [--stall N] [--alpha A] [--fd]\n"
 "           [--init FILE] [--contact FILE] [--gap FILE] [--pressure FILE]\n"
 "           [--displacement FILE] [--png FILE] [--checkpoint FILE]\n"
 "           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
@@ -197,6 +222,8 @@ usage(void)
 "                       DGAMMA/RHO up to the opening RHO and none beyond\n"
 "  --tol TOL            convergence tolerance (default 1e-6)\n"
 "  --max-iter N         iterations per pressure (default 100000)\n"
+"  --stall N            end a solve whose residual has not halved in N\n"
+"                       iterations, as not converged (default 300; 0: never)\n"
 "  --alpha A            contact-line weight of a_yastrebov (default 0.118114)\n"
 "  --fd                 gbar, gbar_c, gbar_c_prime by central differences\n"
 "                       (default spectral)\n"
@@ -224,7 +251,7 @@ usage(void)
 "                       and 10 pressures or 2 approaches and more, else\n"
 "                       estimate)\n"
 "  --wisdom FILE        load FFTW wisdom, save it after planning ($RC_WISDOM)\n"
-"  -q                   no progress display\n"
+"  -q                   no progress line (shown on a terminal after 2 s)\n"
 "  -L LX[xLY]           cell size of an input that carries none\n"
 "  --unit U             length unit of the work and the output fields (m mm\n"
 "                       um nm pm angstrom); the unit of an input that has none\n"
@@ -530,7 +557,7 @@ solver_setup(struct run *r)
 	o->so.modulus = o->modulus;
 	o->so.stop = (volatile int *)&stop_flag;
 	r->pr.name = r->t.name;
-	r->pr.shown = 0;
+	r->pr.width = 0;
 	if (!r->t.quiet && isatty(STDERR_FILENO)) {
 		o->so.progress = show_progress;
 		o->so.progress_ctx = &r->pr;
@@ -711,6 +738,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 	gfmd_pressure(o, k, r->gbar, p, p_star);
 	r->pr.p = *p;
 	r->pr.p_star = *p_star;
+	r->pr.start = rc_clock();
 	/* A periodic checkpoint stops the solve through o->so.stop; it is
 	 * saved and the same pressure goes on from where it stopped. */
 	for (;;) {
@@ -720,10 +748,7 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 			*p_star = r->gbar > 0 ? *p / (o->modulus * r->gbar) : NAN;
 		} else
 			st = rc_solver_solve(r->solver, *p, res, &err);
-		if (r->pr.shown) {
-			fputc('\n', stderr);
-			r->pr.shown = 0;
-		}
+		progress_clear(&r->pr);
 		if (st < 0) {
 			rc_atomic_abort(&r->out);
 			if (o->napproach)
@@ -785,6 +810,7 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .p_adh = rc_solver_adhesive_pressure(s),
 		    .a_attr = rc_solver_attractive_fraction(s),
 		    .l_adh_dx = r->l_adh_dx, .separated = res->separated,
+		    .stalled = res->stalled ? o->so.stall_window : 0,
 		    .nx = h->nx, .ny = h->ny };
 		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
 		    &r->table, r->out.fp, &r->nunconverged, &err);

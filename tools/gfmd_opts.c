@@ -176,6 +176,15 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 		}
 		o->given_max_iter = 1;
 		break;
+	case OPT_STALL:
+		if (tool_long(t, "--stall", arg, &n) == 0) {
+			if (n < 0)
+				tool_bad(t, "--stall %s: want a number of "
+				    "iterations, or 0 for never", arg);
+			else
+				o->so.stall_window = n;
+		}
+		break;
 	case OPT_ALPHA:
 		if (tool_double(t, "--alpha", arg, &o->alpha) == 0 &&
 		    !(o->alpha >= 0 && o->alpha <= 1))

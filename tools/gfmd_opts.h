@@ -34,7 +34,8 @@ enum {
 	OPT_KERNEL,
 	OPT_ADHESION,
 	OPT_RANGE,
-	OPT_LAW
+	OPT_LAW,
+	OPT_STALL
 };
 
 /* The least --checkpoint-every, in minutes (0.3 s). */
@@ -46,6 +47,7 @@ enum {
 	{ "method", required_argument, NULL, OPT_METHOD }, \
 	{ "tol", required_argument, NULL, OPT_TOL }, \
 	{ "max-iter", required_argument, NULL, OPT_MAX_ITER }, \
+	{ "stall", required_argument, NULL, OPT_STALL }, \
 	{ "alpha", required_argument, NULL, OPT_ALPHA }, \
 	{ "init", required_argument, NULL, OPT_INIT }, \
 	{ "contact", required_argument, NULL, OPT_CONTACT }, \

@@ -108,7 +108,17 @@ gfmd_emit_row(const struct tool *t, const struct gfmd_row *in,
 		    "contact, and the tension exceeds the strongest attraction "
 		    "left: past pull-off); row written with separated 1, going "
 		    "on", in->p);
-	else if (!converged) {
+	else if (!converged && in->stalled) {
+		(*nunconverged)++;
+		tool_warn(t, "p = %g: stalled: the residual (%.3g; tolerance "
+		    "%.3g) did not halve in %ld iterations, stopped after %ld; "
+		    "try --method %s, --boundary periodic, or an indenter "
+		    "levelled and filled (surfwarp --detrend plane --fill); "
+		    "--stall 0 runs on to --max-iter; row written, going on",
+		    in->p, in->residual, in->tol, in->stalled, in->iterations,
+		    in->method != NULL && strcmp(in->method, "cg") == 0 ?
+		    "fire" : "cg");
+	} else if (!converged) {
 		(*nunconverged)++;
 		tool_warn(t, "p = %g: not converged after %ld iterations "
 		    "(residual %.3g, tolerance %.3g); row written, going on",

@@ -36,6 +36,8 @@ struct gfmd_row {
 	double p_adh, a_attr;		/* rc_solver_adhesive_pressure, ..._fraction */
 	double l_adh_dx;		/* l_adh / dx (adhesion.h); 0: none */
 	int separated;			/* rc_solve_result.separated */
+	long stalled;			/* rc_solve_result.stalled: the
+					 * window (opts.stall_window); 0 */
 	const rc_grid *indenter;	/* lx, ly and metadata */
 	size_t nx, ny;			/* the whole grid */
 };

@@ -97,7 +97,7 @@ check "SIGINT landed between pressures (grids up to 1024^2), so the resume path 
 terminated=0
 [ -f s512.surf ] || surfgen -n 512 --seed 5 --lambda-s 0.02 -o s512.surf
 for wait_s in 0.5 1 2 4 8; do
-	gfmd-solve -j 1 -q --tol 1e-15 --max-iter 1000000 -p 0.01 s512.surf > noref.tsv 2>msg &
+	gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 1000000 -p 0.01 s512.surf > noref.tsv 2>msg &
 	pid=$!
 	sleep $wait_s
 	kill -TERM $pid 2>/dev/null
@@ -258,7 +258,7 @@ fi
 # refused while the first holds its lock; a lock file left by a killed run
 # does not block the next one.
 rm -f lk.surf .lk.surf.lock
-gfmd-solve -j 1 -q --tol 1e-15 --max-iter 1000000 -p 0.01,0.02 --checkpoint lk.surf \
+gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 1000000 -p 0.01,0.02 --checkpoint lk.surf \
     s512.surf > /dev/null 2>&1 & pid=$!
 i=0
 while [ ! -f .lk.surf.lock ] && [ $i -lt 400 ]; do sleep 0.05; i=$((i + 1)); done
@@ -277,7 +277,7 @@ check "  and is removed at the end" test ! -f .lk.surf.lock
 # finished row (as gfmd-solve(1) promises), exit 1, saying why.
 if mknod full c 1 7 2>/dev/null; then FULLDEV=$PWD/full; else FULLDEV=/dev/full; fi
 surfgen -n 128 --seed 5 -o s128.surf
-gfmd-solve -j 1 --tol 1e-15 --max-iter 3000 -p 0.01,0.02 --checkpoint "$FULLDEV" \
+gfmd-solve -j 1 --tol 1e-15 --stall 0 --max-iter 3000 -p 0.01,0.02 --checkpoint "$FULLDEV" \
     -o full.tsv s128.surf 2>fullmsg & pid=$!
 i=0
 while ! grep -q 'going on' fullmsg && [ $i -lt 600 ] && kill -0 $pid 2>/dev/null; do

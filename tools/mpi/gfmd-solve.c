@@ -254,6 +254,7 @@ solve_pressure(struct run *r, size_t k)
 		    .method = "fire", .boundary = "periodic",
 		    .approach = rc_solver_approach(r->solver),
 		    .hardness = 0, .a_plastic = 0,
+		    .stalled = res.stalled ? o->so.stall_window : 0,
 		    .indenter = r->h, .nx = r->h->nx, .ny = r->ny };
 
 		w = gfmd_emit_row(&r->t, &in, res.converged, &r->row, &r->table,
