@@ -343,14 +343,25 @@ for f in "$DIR"/*; do
 	elif [ "$R_NX" -lt $MIN_COARSE ] || [ "$R_NY" -lt $MIN_COARSE ]; then
 		add "one grid only (under $MIN_COARSE points a side)"
 	else
+		# Two grids of one patch: an odd side cannot be halved (the coarse
+		# copy would be a patch of another size, so contact-stats would see
+		# two systems), so the pair is the map cropped to even sides.
+		pair=$lev pair_rows=$TMP/fine.tsv
+		if [ $((R_NX % 2)) = 1 ] || [ $((R_NY % 2)) = 1 ]; then
+			pair=$TMP/even.surf pair_rows=$TMP/even.tsv
+			timeout $STEP_TLIM "$RC_BIN/surfwarp" -q --crop "0:$((R_NX / 2 * 2)),0:$((R_NY / 2 * 2))" \
+			    -o "$pair" "$lev" 2>"$TMP/even.err" &&
+			    solve "$pair_rows" "$TMP/even-s.err" even "$pair"
+			add "pair on the map cropped to $((R_NX / 2 * 2))x$((R_NY / 2 * 2))"
+		fi
 		d=$(awk -F '\t' 'NR == 2 { printf "%.17gx%.17g", 2 * $5 / $3, 2 * $6 / $4 }' "$TMP/lev-ch.tsv")
-		if ! timeout $STEP_TLIM "$RC_BIN/surfwarp" -q --resample "$d" -o "$TMP/coarse.surf" "$lev" 2>"$TMP/coarse.err"; then
+		if ! timeout $STEP_TLIM "$RC_BIN/surfwarp" -q --resample "$d" -o "$TMP/coarse.surf" "$pair" 2>"$TMP/coarse.err"; then
 			add "coarsen: $(msg "$TMP/coarse.err" "")"
 		else
 			solve "$TMP/coarse.tsv" "$TMP/coarse-s.err" coarse "$TMP/coarse.surf"
 			if [ "$S_STATUS" = 124 ]; then
 				add "coarse solve stopped by the time bound ($S_BOUND)"
-			elif timeout $STEP_TLIM "$RC_BIN/contact-stats" -q "$TMP/fine.tsv" "$TMP/coarse.tsv" >"$TMP/cs.tsv" 2>"$TMP/cs.err"; then
+			elif timeout $STEP_TLIM "$RC_BIN/contact-stats" -q "$pair_rows" "$TMP/coarse.tsv" >"$TMP/cs.tsv" 2>"$TMP/cs.err"; then
 				ext="$(sig "$(col "$TMP/cs.tsv" a_r 1)")	$(sig "$(col "$TMP/cs.tsv" a_r 2)")"
 			else
 				add "contact-stats: $(msg "$TMP/cs.err" "")"
