@@ -259,6 +259,30 @@ PATH="$T_TMP/fakebin" "$RC_BIN/contact-stats" --png png/k.png -o /dev/null a.tsv
 check "--png with a failing gnuplot: exit 1" test "$st" = 1
 check "--png with a failing gnuplot: said so" grep -q "gnuplot failed (exit status 3)" err.txt
 check "a failed --png leaves nothing beside the target" test "$(ls -A png)" = t.tsv
+# Issue 27: the gnuplot of a killed contact-stats ran on.  A slow fake
+# gnuplot (its pid in a file, then exec sleep: the same process) is
+# started; contact-stats is killed (SIGKILL: no handler runs); the fake
+# must be gone within a second.
+mkdir -p slowbin
+printf '#!/bin/sh\necho $$ > "%s/slow.pid"\nexec sleep 30\n' "$T_TMP" >slowbin/gnuplot
+chmod +x slowbin/gnuplot
+PATH="$T_TMP/slowbin:$PATH" "$RC_BIN/contact-stats" --png png/slow.png -o /dev/null a.tsv 2>/dev/null &
+cpid=$!
+i=0
+while [ ! -s slow.pid ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
+kill -KILL $cpid 2>/dev/null; wait $cpid 2>/dev/null
+gp=$(cat slow.pid 2>/dev/null)
+i=0
+while [ -n "$gp" ] && kill -0 "$gp" 2>/dev/null && [ $i -lt 20 ]; do sleep 0.05; i=$((i + 1)); done
+if [ -z "$gp" ]; then
+	fail "killed contact-stats: the fake gnuplot never started"
+elif kill -0 "$gp" 2>/dev/null; then
+	fail "killed contact-stats: its gnuplot (pid $gp) runs on"
+	kill "$gp" 2>/dev/null
+else
+	pass "killed contact-stats: its gnuplot died too"
+fi
+rm -f png/.slow.png.* 2>/dev/null
 if command -v gnuplot >/dev/null 2>&1; then
 	check_status "--png" 0 contact-stats --png png/k.png -o /dev/null a.tsv h3.tsv
 	check "--png writes a PNG" test "$(od -An -tx1 -N8 png/k.png | tr -d ' ')" = 89504e470d0a1a0a
