@@ -196,11 +196,12 @@ uninstall:
 	    $(MAN7:man/%=$(DESTDIR)$(PREFIX)/share/man/%)
 	rm -rf $(DESTDIR)$(INCDIR)
 
-# Debian packages needed to build and test (what .ci/run installs).
+# Debian packages: deps.txt to build, test and run the demo (README's
+# install line), deps-optional.txt for the tests that skip without them,
+# check-mpi and valgrind; .ci/run installs the same two lists.
 deps:
-	apt-get update && apt-get install -y build-essential pkg-config \
-	    libfftw3-dev libgsl-dev libpng-dev libzip-dev libxml2-dev libnetcdf-dev \
-	    mandoc gnuplot-nox man-db gwyddion python3-numpy netcdf-bin
+	apt-get update && apt-get install -y --no-install-recommends \
+	    $$(cat deps.txt deps-optional.txt)
 
 clean:
 	rm -rf build bin

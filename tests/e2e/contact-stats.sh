@@ -221,7 +221,7 @@ if command -v gnuplot >/dev/null 2>&1; then
 	gnuplot k.gp 2>/dev/null
 	check "gnuplot makes a PNG" test "$(od -An -tx1 -N4 k.png 2>/dev/null | tr -d ' ')" = 89504e47
 else
-	skip 1 "gnuplot not installed: the --gnuplot script is not run"
+	skip 1 "gnuplot not installed: the --gnuplot script is not run (apt-get install gnuplot-nox)"
 fi
 # Review fixes.  Unknown options: one line of ours, no getopt message.
 contact-stats --bogus a.tsv >/dev/null 2>err.txt; st=$?
@@ -305,6 +305,6 @@ if command -v gnuplot >/dev/null 2>&1; then
 	contact-stats --png - -o /dev/null a.tsv >png/stdout.png 2>/dev/null
 	check "--png - writes the PNG to standard output" test "$(od -An -tx1 -N4 png/stdout.png | tr -d ' ')" = 89504e47
 else
-	skip 5 "gnuplot not installed: --png output not tested"
+	skip 5 "gnuplot not installed: --png output not tested (apt-get install gnuplot-nox)"
 fi
 summary

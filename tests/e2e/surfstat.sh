@@ -41,7 +41,7 @@ if command -v gnuplot >/dev/null 2>&1; then
 	check "gnuplot runs the script" gnuplot c.gp
 	check "gnuplot wrote the PNG" [ -s c.png ]
 else
-	skip 2 "gnuplot not installed: the --gnuplot script is not run"
+	skip 2 "gnuplot not installed: the --gnuplot script is not run (apt-get install gnuplot-nox)"
 fi
 surfstat --acf r.surf > acf.tsv
 check "acf has x, y, radial" [ "$(cut -f1 acf.tsv | sort -u | tr '\n' ' ')" = "direction radial x y " ]
