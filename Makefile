@@ -122,8 +122,13 @@ $(O)/bench/bench_free: $(O)/bench/bench_free.o $(O)/tests/free_cases.o $(LIB)
 $(O)/bench/bench_gfmd: $(O)/bench/bench_gfmd.o $(O)/tests/rough_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
+# make check: every test but the long validations of tests/long.txt (at
+# most 5 minutes on 2 idle cores); make check-long: those (CI runs both)
 check: $(TOOLS) $(TESTS)
-	@sh tests/run.sh $(BIN) $(O)/tests
+	@sh tests/run.sh $(BIN) $(O)/tests quick
+.PHONY: check-long
+check-long: $(TOOLS) $(TESTS)
+	@sh tests/run.sh $(BIN) $(O)/tests long
 
 # the hard-case matrix (tests/e2e/hard.sh) on 4x and 8x finer grids; minutes
 .PHONY: check-hard

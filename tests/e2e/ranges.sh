@@ -22,6 +22,17 @@ check_rel "-p 1000 solves: a_r = 1" "$(col full.tsv a_r)" 1 0
 gfmd-solve -q -p 0.05 --thickness 1e6 --poisson 0.3 -o thick.tsv s4.surf
 check_rel "--thickness 1e6 solves" $? 0 0
 
+# Strong short-range adhesion: its convergence test was scaled by the
+# law's peak stress (1e5 here, 2e6 times the load), so the flat start
+# passed after 0 iterations with one point in contact: a_r = 1/1024 at
+# --adhesion 1 against 0.199 at 0.01.  More adhesion never gives less
+# contact: a_r is non-decreasing in the adhesion and in the range.
+ar() { gfmd-solve -q -p 0.05 "$@" s4.surf 2>/dev/null | awk -F'\t' '
+	NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } { print $c["a_r"] }'; }
+a0=$(ar) a1=$(ar --adhesion 0.01 --range 1e-5) a2=$(ar --adhesion 1 --range 1e-5)
+a3=$(ar --adhesion 1 --range 1e-4)
+check "a_r non-decreasing in the adhesion: $a0 <= $a1 <= $a2 <= $a3 (range 1e-5, then 1e-4)" \
+    awk -v a="$a0" -v b="$a1" -v c="$a2" -v d="$a3" 'BEGIN { exit !(a > 0 && a <= b && b <= c && c <= d) }'
 # -L is for formats that carry no size: said when the file has one.
 surfstat -q -L 5 -o st.tsv s4.surf 2> err
 check "-L on a file with a size: warned ($(head -c 150 err))" \
