@@ -124,7 +124,7 @@ PY
 	RC_GWYDDION=/nonexistent/gwyddion check_status "without Gwyddion: exit 1" 1 surfstat v.nrrd
 	check "without Gwyddion: names the package" grep -q 'Debian package gwyddion' "$T_TMP/stderr"
 else
-	skip 23 "gwyddion or python3 not installed: the Gwyddion client tests (apt-get install gwyddion python3)"
+	skip 24 "gwyddion or python3 not installed: the Gwyddion client tests (apt-get install gwyddion python3)"
 fi
 
 # netCDF written by the netCDF library (ncgen) in SurfaceTopography's

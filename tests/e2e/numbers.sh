@@ -119,7 +119,7 @@ if command -v python3 >/dev/null 2>&1; then
 	check "contact-stats --json with control characters is valid JSON and keeps them" \
 	    json_ok k.json "amplitudes='sq\\x01rt\\x7f\"\\\\'"
 else
-	skip 6 "python3 not installed: JSON checked by a strict parser (apt-get install python3)"
+	skip 5 "python3 not installed: JSON checked by a strict parser (apt-get install python3)"
 fi
 # Concatenated --json outputs read like concatenated TSV.
 gfmd-solve -q --json -p 0.05 -o c32.json s32.surf
