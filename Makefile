@@ -122,8 +122,13 @@ $(O)/bench/bench_free: $(O)/bench/bench_free.o $(O)/tests/free_cases.o $(LIB)
 $(O)/bench/bench_gfmd: $(O)/bench/bench_gfmd.o $(O)/tests/rough_cases.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
+# make check: every test but the long validations of tests/long.txt (at
+# most 5 minutes on 2 idle cores); make check-long: those (CI runs both)
 check: $(TOOLS) $(TESTS)
-	@sh tests/run.sh $(BIN) $(O)/tests
+	@sh tests/run.sh $(BIN) $(O)/tests quick
+.PHONY: check-long
+check-long: $(TOOLS) $(TESTS)
+	@sh tests/run.sh $(BIN) $(O)/tests long
 
 # the hard-case matrix (tests/e2e/hard.sh) on 4x and 8x finer grids; minutes
 .PHONY: check-hard
@@ -203,11 +208,12 @@ uninstall:
 	    $(MAN7:man/%=$(DESTDIR)$(PREFIX)/share/man/%)
 	rm -rf $(DESTDIR)$(INCDIR)
 
-# Debian packages needed to build and test (what .ci/run installs).
+# Debian packages: deps.txt to build, test and run the demo (README's
+# install line), deps-optional.txt for the tests that skip without them,
+# check-mpi and valgrind; .ci/run installs the same two lists.
 deps:
-	apt-get update && apt-get install -y build-essential pkg-config \
-	    libfftw3-dev libgsl-dev libpng-dev libzip-dev libxml2-dev libnetcdf-dev zlib1g-dev \
-	    mandoc gnuplot-nox man-db gwyddion python3-numpy netcdf-bin
+	apt-get update && apt-get install -y --no-install-recommends \
+	    $$(cat deps.txt deps-optional.txt)
 
 clean:
 	rm -rf build bin

@@ -150,6 +150,40 @@ follow_links(const char *path, rc_err *err)
 	return cur;
 }
 
+/* Whether an existing regular file target (st, in its directory) may be
+ * replaced, decided as a shell's `>` would: not a write-protected file
+ * (EACCES; root may), and not another user's file in a sticky directory
+ * of someone else's (/tmp), which rename(2) could not replace (EPERM)
+ * and the shell (fs.protected_regular) would not open.  0, or -1 with err
+ * set naming path. */
+static int
+may_replace(const char *path, const char *target, const struct stat *st,
+    rc_err *err)
+{
+	struct stat dir_st;
+	char *dir, *slash;
+	int r = 0;
+
+	if (faccessat(AT_FDCWD, target, W_OK, AT_EACCESS) != 0)
+		return rc_seterr(err, "%s: %s (the file is write-protected; "
+		    "remove it or make it writable to replace it)", path,
+		    strerror(errno));
+	if ((dir = strdup(target)) == NULL)
+		return rc_seterr(err, "out of memory");
+	if ((slash = strrchr(dir, '/')) == NULL)
+		strcpy(dir, ".");
+	else
+		slash[slash == dir] = '\0';
+	if (stat(dir, &dir_st) == 0 && (dir_st.st_mode & S_ISVTX) &&
+	    geteuid() != 0 && st->st_uid != geteuid() &&
+	    dir_st.st_uid != geteuid())
+		r = rc_seterr(err, "%s: belongs to another user in the sticky "
+		    "directory %s: it cannot be replaced (name another file)",
+		    path, dir);
+	free(dir);
+	return r;
+}
+
 int
 rc_atomic_check(const char *path, rc_err *err)
 {
@@ -180,7 +214,8 @@ rc_atomic_check(const char *path, rc_err *err)
 				r = rc_seterr(err, "%s: %s", path, strerror(errno));
 			free(target);
 			return r;
-		}
+		} else
+			r = may_replace(path, target, &st, err);
 	}
 	if (r == 0 && (slash = strrchr(target, '/')) != NULL && slash[1] == '\0')
 		r = rc_seterr(err, "%s: names a directory, not a file", path);
@@ -268,6 +303,11 @@ rc_atomic_open(rc_atomic *a, const char *path, rc_err *err)
 	if (exists && !S_ISREG(st.st_mode))	/* device, FIFO, socket */
 		return open_direct(a, open(a->path, O_WRONLY | O_NOCTTY), path,
 		    err);
+	if (exists && may_replace(path, a->path, &st, err) != 0) {
+		free(a->path);
+		a->path = NULL;
+		return -1;
+	}
 
 	slash = strrchr(a->path, '/');
 	base = slash ? slash + 1 : a->path;

@@ -4,6 +4,9 @@
  *
  * What rc_atomic_open does depends on what the path names:
  * - NULL or "-": standard output, written directly.
+ * - an existing regular file that is write-protected, or another user's
+ *   in someone else's sticky directory (/tmp): refused (EACCES, or
+ *   rename(2) could not replace it), as a shell's `>` refuses.
  * - a new name, or an existing regular file: a temporary file is created
  *   in the same directory (so rename(2) is atomic) and rc_atomic_commit
  *   flushes, fsyncs and renames it over the target.  An existing target is

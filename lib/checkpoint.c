@@ -20,9 +20,10 @@
 #include "solver.h"
 
 /* 2: the identity hash covers metadata, units and the missing-point mask;
- * 3: the scene (boundary, kernel, effects); 4: the adhesive law.
- * Versions 2 and 3 are still read. */
-#define VERSION 4
+ * 3: the scene (boundary, kernel, effects); 4: the adhesive law;
+ * 5: checkpoint.sum over the whole state (an edited row or displacement is
+ * refused).  Versions 2 to 4 are still read, without the sum. */
+#define VERSION 5
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL
 
@@ -56,18 +57,27 @@ fnv_str(uint64_t h, const char *s)
 	return h;
 }
 
-uint64_t
-rc_checkpoint_hash(const rc_grid *g)
+/* FNV-1a over the size and the values' bit patterns. */
+static uint64_t
+hash_values(const rc_grid *g)
 {
 	uint64_t h = FNV_OFFSET;
-	size_t k, n = rc_grid_size(g);
 
 	h = fnv_u64(h, g->nx);
 	h = fnv_u64(h, g->ny);
 	h = fnv_double(h, g->lx);
 	h = fnv_double(h, g->ly);
-	for (k = 0; k < n; k++)
+	for (size_t k = 0; k < rc_grid_size(g); k++)
 		h = fnv_double(h, g->z[k]);
+	return h;
+}
+
+uint64_t
+rc_checkpoint_hash(const rc_grid *g)
+{
+	uint64_t h = hash_values(g);
+	size_t k, n = rc_grid_size(g);
+
 	/* What else reaches the rows or the solve: the metadata (carried as
 	 * columns), units, the periodic flag and missing points. */
 	h = fnv_u64(h, g->nmeta);
@@ -79,6 +89,21 @@ rc_checkpoint_hash(const rc_grid *g)
 	if (g->valid != NULL)
 		for (k = 0; k < n; k++)
 			h = fnv_u64(h, g->valid[k]);
+	return h;
+}
+
+/* checkpoint.sum: FNV-1a over the size, the displacement's bit patterns
+ * and every checkpoint.* key and value in file order but the sum's own,
+ * so that any edit of a row, the list, the progress or u is caught. */
+uint64_t
+rc_checkpoint_sum(const rc_grid *g)
+{
+	uint64_t h = hash_values(g);
+
+	for (size_t k = 0; k < g->nmeta; k++)
+		if (strncmp(g->meta[k].key, "checkpoint.", 11) == 0 &&
+		    strcmp(g->meta[k].key, "checkpoint.sum") != 0)
+			h = fnv_str(fnv_str(h, g->meta[k].key), g->meta[k].val);
 	return h;
 }
 
@@ -375,7 +400,9 @@ rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
 		if (rc_grid_meta_set(g, key, c->rows[k], err) != 0)
 			goto out;
 	}
-	r = rc_grid_write(g, path, RC_FMT_SURF, err);
+	if (rc_grid_meta_setf(g, "checkpoint.sum", err, "%016" PRIx64,
+	    rc_checkpoint_sum(g)) == 0)
+		r = rc_grid_write(g, path, RC_FMT_SURF, err);
 out:
 	rc_grid_free(g);
 	return r;
@@ -518,6 +545,47 @@ parse_list(rc_checkpoint *c, const char *s, rc_err *err)
 	return 0;
 }
 
+/* Finished row k belongs to pressures[k]: its p_star (a reduced list) or
+ * p (an absolute one) is that pressure, exactly (rows hold shortest
+ * round-trip numbers). */
+static int
+check_rows_pressures(const rc_checkpoint *c, rc_err *err)
+{
+	const char *want = c->reduced ? "p_star" : "p", *s;
+	size_t col = 0, len = strlen(want);
+	int found = 0;
+
+	for (s = c->columns; ; col++) {
+		size_t n = strcspn(s, "\t");
+
+		if (n == len && strncmp(s, want, len) == 0) {
+			found = 1;
+			break;
+		}
+		if (s[n] == '\0')
+			break;
+		s += n + 1;
+	}
+	if (!found)
+		return rc_seterr(err, "meta.checkpoint.columns: no %s column", want);
+	for (size_t k = 0; k < c->nrows; k++) {
+		char *end;
+		double v;
+
+		s = c->rows[k];
+		for (size_t i = 0; i < col && s != NULL; i++)
+			if ((s = strchr(s, '\t')) != NULL)
+				s++;
+		v = s != NULL ? strtod(s, &end) : NAN;
+		if (s == NULL || end == s || (*end != '\t' && *end != '\0') ||
+		    v != c->pressures[k])
+			return rc_seterr(err, "meta.checkpoint.row.%zu: %s is not "
+			    "pressure %zu of the list (%.17g)", k, want, k + 1,
+			    c->pressures[k]);
+	}
+	return 0;
+}
+
 /* Long: the checkpoint's header keys in file order, each checked where
  * read. */
 int
@@ -527,7 +595,7 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	rc_grid *g;
 	const char *s;
 	char key[64], *end;
-	long v;
+	long v, version;
 
 	memset(c, 0, sizeof(*c));
 	*up = NULL;
@@ -544,6 +612,7 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 		    "to %d", v, VERSION);
 		goto bad;
 	}
+	version = v;
 	if (read_scene(g, v, c, err) != 0)
 		goto bad;
 	if ((s = need(g, "checkpoint.input_sum", err)) == NULL)
@@ -647,6 +716,24 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 				goto bad;
 			}
 			c->nrows++;
+		}
+		if (check_rows_pressures(c, err) != 0)
+			goto bad;
+	}
+	/* last, so that a field out of range is named as such */
+	if (version >= 5) {
+		uint64_t want;
+
+		if ((s = need(g, "checkpoint.sum", err)) == NULL)
+			goto bad;
+		errno = 0;
+		want = strtoull(s, &end, 16);
+		if (strlen(s) != 16 || *end != '\0' || errno != 0 ||
+		    want != rc_checkpoint_sum(g)) {
+			rc_seterr(err, "meta.checkpoint.sum = %s does not match its "
+			    "content: the checkpoint was changed or damaged "
+			    "since it was written", s);
+			goto bad;
 		}
 	}
 	*up = g;

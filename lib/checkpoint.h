@@ -6,7 +6,7 @@
  * A checkpoint is a native .surf grid (surf(5)) of the elastic surface
  * height u of the solve in progress (or of the last finished one), whose
  * metadata, all under "checkpoint.", say what it belongs to:
- *   version        4
+ *   version        5
  *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly, the
  *                  bit patterns of its heights, its metadata, units,
  *                  periodic flag and missing-point mask), 16 hex digits
@@ -31,6 +31,11 @@
  *                  n (number) or s (string)
  *   row.K          the finished row K, K < next, values tab-separated with
  *                  '\', tab and space escaped as \\, \t, \s
+ *   sum            FNV-1a 64-bit hash of the size, u's bit patterns and
+ *                  every checkpoint.* key and value above, 16 hex digits;
+ *                  since version 5 (read refuses a checkpoint whose sum
+ *                  does not match, and rows whose p_star, or p for an
+ *                  absolute list, is not pressures[K])
  * Nothing else is needed to resume: rows already finished are re-emitted
  * from the checkpoint, and u warm-starts the interrupted pressure.
  */
@@ -76,6 +81,11 @@ typedef struct rc_checkpoint {
  * same hash anywhere, and one whose rows would differ (other metadata
  * columns) does not. */
 uint64_t rc_checkpoint_hash(const rc_grid *indenter);
+
+/* checkpoint.sum of a checkpoint grid (version 5): FNV-1a over nx, ny,
+ * lx, ly, the heights' bit patterns and the checkpoint.* metadata in order
+ * but checkpoint.sum itself. */
+uint64_t rc_checkpoint_sum(const rc_grid *checkpoint);
 
 /* Fill identity from the indenter and copy the pressure list; rows empty;
  * the scene the half space, periodic, no effect. */

@@ -39,24 +39,31 @@ by_output(const void *a, const void *b)
 	return (x->p_star > y->p_star) - (x->p_star < y->p_star);
 }
 
+static int
+by_key_row(const void *a, const void *b)
+{
+	const struct est *x = a, *y = b;
+	int k = strcmp(x->key, y->key);
+
+	if (k != 0)
+		return k;
+	return (x->row > y->row) - (x->row < y->row);
+}
+
 /* Sort by curve (keys without p_star; curves in order of first input row)
- * then by p*. */
+ * then by p*.  The first row of each curve from one sort by (key, row):
+ * n log n (comparing every estimate with every other took 80 s for
+ * 18,000 rows --per-seed, issue 27). */
 static void
 order_output(struct ctx *c, struct est *e, size_t n)
 {
-	const char **k = rc__cs_pool_alloc(c, n, sizeof(*k));
-
 	for (size_t i = 0; i < n; i++)
-		k[i] = rc__cs_make_key(c, e[i].row, e[i].p_star, c->o->per_seed,
-		    0);
-	for (size_t i = 0; i < n; i++) {
-		size_t first = e[i].row;
-		for (size_t j = 0; j < n; j++)
-			if (e[j].row < first && strcmp(k[i], k[j]) == 0)
-				first = e[j].row;
-		e[i].curve_row = first;
-		e[i].key = k[i];
-	}
+		e[i].key = rc__cs_make_key(c, e[i].row, e[i].p_star,
+		    c->o->per_seed, 0);
+	qsort(e, n, sizeof(*e), by_key_row);
+	for (size_t i = 0; i < n; i++)
+		e[i].curve_row = i > 0 && strcmp(e[i].key, e[i - 1].key) == 0 ?
+		    e[i - 1].curve_row : e[i].row;
 	qsort(e, n, sizeof(*e), by_output);
 }
 
@@ -180,25 +187,40 @@ fill_row(struct ctx *c, rc_row *row, const struct est *x, const struct derived *
 		rc__cs_fail(c, "out of memory");
 }
 
+/* Which shown key columns differ between the estimates (the columns a
+ * curve's label names): one pass over them, not one per curve (that was
+ * quadratic with --per-seed, issue 27).  A pool array of ncols flags. */
+static const char *
+varying_keys(struct ctx *c, const struct est *e, size_t n)
+{
+	char *varies = rc__cs_pool_alloc(c, c->rs->ncols ? c->rs->ncols : 1, 1);
+
+	for (size_t k = 0; k < c->rs->ncols; k++) {
+		char num0[32], num[32];
+		const char *a;
+
+		varies[k] = 0;
+		if (!key_shown(c, k) || n == 0)
+			continue;
+		a = rc__cs_key_text(c, e[0].row, (int)k, num0);
+		for (size_t j = 1; j < n && !varies[k]; j++)
+			varies[k] = strcmp(a, rc__cs_key_text(c, e[j].row, (int)k,
+			    num)) != 0;
+	}
+	return varies;
+}
+
 /* Label of the curve of e[i]: the shown key columns whose values differ
- * between curves; quotes and control characters as '_' (it goes into a
- * gnuplot string). */
+ * between curves (varies); quotes and control characters as '_' (it goes
+ * into a gnuplot string). */
 static char *
-curve_label(struct ctx *c, const struct est *e, size_t n, size_t i)
+curve_label(struct ctx *c, const struct est *e, const char *varies, size_t i)
 {
 	char buf[RC_ERRLEN], *lab;
 
 	buf[0] = '\0';
 	for (size_t k = 0; k < c->rs->ncols; k++) {
-		int varies = 0;
-		if (!key_shown(c, k))
-			continue;
-		char num0[32], num[32];
-		const char *a = rc__cs_key_text(c, e[0].row, (int)k, num0);
-		for (size_t j = 1; j < n && !varies; j++)
-			varies = strcmp(a, rc__cs_key_text(c, e[j].row, (int)k,
-			    num)) != 0;
-		if (!varies)
+		if (!varies[k])
 			continue;
 		const char *s = rc_rows_str(c->rs, e[i].row, (int)k);
 		size_t len = strlen(buf);
@@ -218,6 +240,7 @@ make_output(struct ctx *c, const struct est *e, size_t n)
 {
 	rc_cstats *res = c->res;
 	char method[256];
+	const char *varies = varying_keys(c, e, n);
 
 	rc_cstats_method(c->o, method, sizeof(method));
 	if ((res->row = calloc(n, sizeof(*res->row))) == NULL ||
@@ -236,7 +259,7 @@ make_output(struct ctx *c, const struct est *e, size_t n)
 		if (i > 0 && new_curve)
 			res->ncurves++;
 		if (new_curve)
-			res->label[res->ncurves] = curve_label(c, e, n, i);
+			res->label[res->ncurves] = curve_label(c, e, varies, i);
 		res->point[i].curve = res->ncurves;
 		res->point[i].p_star = e[i].p_star;
 		res->point[i].kappa = d.kappa;

@@ -13,15 +13,15 @@
 
 #include <errno.h>
 #include <math.h>
-#include <spawn.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "atomic.h"
-
-extern char **environ;
 
 #define MAX_DATA_TICKS 10
 
@@ -233,6 +233,47 @@ copy_file(const char *path, FILE *out)
 	return rc;
 }
 
+/* Start argv[0] from PATH as a child that dies with this process (issue
+ * 27: a gnuplot of a killed contact-stats ran on): PR_SET_PDEATHSIG
+ * sends it SIGKILL when we end, by any signal; set before exec, checked
+ * against a parent already gone.  0 and *pid, or an errno value (ENOENT:
+ * not found), passed back from the child through a close-on-exec pipe. */
+static int
+spawn_tied(char *const argv[], pid_t *pid)
+{
+	pid_t parent = getpid();
+	int fds[2], e = 0;
+	ssize_t n;
+
+	if (pipe(fds) != 0)
+		return errno;
+	if (fcntl(fds[1], F_SETFD, FD_CLOEXEC) != 0 || (*pid = fork()) < 0) {
+		e = errno;
+		close(fds[0]);
+		close(fds[1]);
+		return e;
+	}
+	if (*pid == 0) {
+		close(fds[0]);
+		if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent)
+			_exit(127);
+		execvp(argv[0], argv);
+		e = errno;
+		if (write(fds[1], &e, sizeof(e)) < 0)
+			_exit(127);
+		_exit(127);
+	}
+	close(fds[1]);
+	while ((n = read(fds[0], &e, sizeof(e))) < 0 && errno == EINTR)
+		;
+	close(fds[0]);
+	if (n == (ssize_t)sizeof(e)) {	/* exec failed */
+		waitpid(*pid, NULL, 0);
+		return e;
+	}
+	return 0;
+}
+
 /* The script goes to a temporary file; gnuplot writes the PNG to the
  * temporary name rc_atomic made beside path (which rc_atomic_commit then
  * fsyncs and renames), or, for standard output, to its own standard
@@ -246,7 +287,7 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	rc_atomic out;
 	FILE *fp = NULL;
 	char *png_tmp = NULL;
-	pid_t pid;
+	pid_t pid = -1;
 	int fd, st = 0, rc;
 
 	snprintf(script, sizeof(script), "%s/contact-stats.gp.XXXXXX",
@@ -285,9 +326,10 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 		return -1;
 	}
 	fflush(stdout);
-	rc = posix_spawnp(&pid, "gnuplot", NULL, NULL, argv, environ);
-	if (rc == 0 && waitpid(pid, &st, 0) < 0)
-		rc = errno;
+	rc = spawn_tied(argv, &pid);
+	while (rc == 0 && waitpid(pid, &st, 0) < 0)
+		if (errno != EINTR)
+			rc = errno;
 	drop(script);
 	if (rc == ENOENT) {
 		if (png_tmp != NULL) {

@@ -284,6 +284,37 @@ host_le(void)
 	return *(const unsigned char *)&one == 1;
 }
 
+/* What reading the values costs, decided before any allocation (issue
+ * 27: an x3p of 1.1 MB unpacked to 12000^2 points, 1.16 GB, without a
+ * word; zip compresses a smooth or constant map by 1000 and more): the
+ * grid (8 bytes a point), the packed values (2, 4 or 8) and a mask (1
+ * and 1/8).  Past RC_X3P_MAX_MB MiB (default X3P_MAX_MB) the file is
+ * refused with that cost and how to raise the limit. */
+#define X3P_MAX_MB 1024.0
+static int
+check_cost(const struct desc *d, rc_err *err)
+{
+	double n = (double)d->nx * (double)d->ny;
+	double el = d->type == 'I' ? 2 : d->type == 'L' || d->type == 'F' ? 4 : 8;
+	double mib = n * (8 + el + 1 + 1.0 / 8) / 1048576.0, limit = X3P_MAX_MB;
+	const char *env = getenv("RC_X3P_MAX_MB");
+
+	if (env != NULL && *env != '\0') {
+		char *end;
+
+		limit = strtod(env, &end);
+		if (*end != '\0' || !(limit >= 0) || !isfinite(limit))
+			return rc_seterr(err, "RC_X3P_MAX_MB=%.40s: want a number of "
+			    "MiB", env);
+	}
+	if (mib > limit)
+		return rc_seterr(err, "x3p: %zu x %zu values unpack to %.0f MiB of "
+		    "memory, past the limit of %g MiB; to read it, set "
+		    "RC_X3P_MAX_MB=%.0f (or more) in the environment", d->nx,
+		    d->ny, ceil(mib), limit, ceil(mib));
+	return 0;
+}
+
 /* The values, from the binary file or the DataList, into g. */
 /* Long: the two ways x3p holds values (binary file, DataList) with their
  * checks. */
@@ -471,7 +502,7 @@ rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 		goto out;
 	}
 	if (check_main_sum(za, root, xml, xlen, err) != 0 ||
-	    read_desc(root, &d, err) != 0)
+	    read_desc(root, &d, err) != 0 || check_cost(&d, err) != 0)
 		goto out;
 	if ((g = rc__io_grid_alloc(d.nx, d.ny, d.nx * d.dx, d.ny * d.dy, err)) ==
 	    NULL)

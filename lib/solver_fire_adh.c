@@ -19,10 +19,15 @@
  *     the wall takes implied - sigma_a(0) >= 0, f_eff = 0;
  *   elsewhere f_eff = sigma_a - implied (d = -f_eff, the equilibrium
  *     error).
- * Convergence: rms(d) / P <= tol, P = max(|p|, sigma_max) (the pressure
- * scale: the load, or the adhesive stress when the load is small or
- * zero).  The load balance error is the mean of d over the points off
- * contact (<K u> = 0), so the rms bounds it.
+ * Convergence: rms(d) / P <= tol, P = max(|p|, T), T the mean |traction|
+ * the state carries (|p + K u| on contact, |sigma_a| elsewhere): the
+ * load, or the stresses adhesion makes when the load is small or zero.
+ * (P was max(|p|, sigma_max): with sigma_max 2e6 times the load, as for
+ * --adhesion 1 --range 1e-5 on a 32^2 map at p* = 0.05, the flat start's
+ * error, the load itself, passed as converged after 0 iterations with
+ * one point in contact, and more adhesion gave less contact; issue 27.)
+ * The load balance error is the mean of d over the points off contact
+ * (<K u> = 0), so the rms bounds it.
  *
  * Load control (control 0): the mean mode has the mass of solver_fire.c
  * (from the contact count).  The body separates when no point is in
@@ -125,6 +130,7 @@ struct adh_pass {
 	double sum_d2;		/* sum of d^2 off contact */
 	double sum_ku_c;	/* sum of K u over contact points */
 	double sum_sa_f;	/* sum of sigma_a off contact */
+	double sum_abs;		/* sum of |traction| (the state's scale) */
 	double power;		/* f_eff . v */
 	double gmin;		/* smallest gap off contact */
 };
@@ -135,20 +141,22 @@ adh_wall_force(const rc__adh_view *w, const rc_adhesion *law, double p,
     struct adh_pass *o)
 {
 	size_t k, n = w->n, on = 0;
-	double sum_d2 = 0, sum_kc = 0, sum_sa = 0, pw = 0, gmin = HUGE_VAL;
+	double sum_d2 = 0, sum_kc = 0, sum_sa = 0, sum_abs = 0, pw = 0;
+	double gmin = HUGE_VAL;
 	const double *u = w->u, *h = w->h, *v = w->v;
 	double *f = w->f, sa0 = -law->smax;
 	unsigned char *contact = w->contact;
 
 	rc_elastic_force(w->el, u, f);
-#pragma omp parallel for reduction(+:sum_d2, sum_kc, sum_sa, on, pw) \
-    reduction(min:gmin) schedule(static)
+#pragma omp parallel for reduction(+:sum_d2, sum_kc, sum_sa, sum_abs, on, \
+    pw) reduction(min:gmin) schedule(static)
 	for (k = 0; k < n; k++) {
 		double implied = p + f[k], g = u[k] - h[k];
 
 		if (g <= 0 && implied > sa0) {
 			contact[k] = 1;
 			sum_kc += f[k];
+			sum_abs += fabs(implied);
 			on++;
 			f[k] = 0;
 		} else {
@@ -158,6 +166,7 @@ adh_wall_force(const rc__adh_view *w, const rc_adhesion *law, double p,
 			f[k] = -d;
 			sum_d2 += d * d;
 			sum_sa += sa;
+			sum_abs += fabs(sa);
 			if (g < gmin)
 				gmin = g;
 		}
@@ -167,6 +176,7 @@ adh_wall_force(const rc__adh_view *w, const rc_adhesion *law, double p,
 	o->sum_d2 = sum_d2;
 	o->sum_ku_c = sum_kc;
 	o->sum_sa_f = sum_sa;
+	o->sum_abs = sum_abs;
 	o->power = pw;
 	o->gmin = gmin;
 }
@@ -289,7 +299,7 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 		 * load is the tractions' sum */
 		load = w->mass0 > 0 ? fabs(ps.sum_ku_c + ps.sum_sa_f) /
 		    w->n_act : fabs(p) * spread;
-		scale = fmax(load, law->smax);
+		scale = fmax(load, ps.sum_abs / w->n_act);
 		residual = sqrt(ps.sum_d2 / w->n_act) / scale;
 		if (control == RC__ADH_LEVEL && nf > 0)
 			p = (ps.sum_ku_c + ps.sum_sa_f) / (double)nf;

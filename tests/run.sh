@@ -3,10 +3,22 @@
 # run.sh - run every C test binary and every end-to-end script, add up
 # their "N passed, N failed[, N skipped]" lines and end with the total
 # (", N skipped" only when a test could not run here; SKIP lines say why).
-#   tests/run.sh BINDIR TESTBINDIR
+# Each test's line is printed as it finishes.  The tests named in
+# tests/long.txt (minutes each: the long validations) run only in the
+# long set, the others and the manual pages' lint only in the quick one.
+#   tests/run.sh BINDIR TESTBINDIR [quick|long|all]   (default all)
 RC_BIN=$(cd "$1" && pwd); export RC_BIN
 tbin=$2
+set_=${3:-all}
 top=$(cd "$(dirname "$0")/.." && pwd); export RC_TOP="$top"
+# in_set NAME: whether the test NAME belongs to the set being run
+in_set() {
+	case $set_ in
+	all) return 0 ;;
+	long) grep -qx "$1" "$top/tests/long.txt" ;;
+	*) ! grep -qx "$1" "$top/tests/long.txt" ;;
+	esac
+}
 passed=0 failed=0 skipped=0 broken=""
 log=$(mktemp)
 
@@ -37,6 +49,7 @@ run_one() {
 
 for t in "$tbin"/test_*; do
 	[ -x "$t" ] || continue
+	in_set "$(basename "$t")" || continue
 	run_one "$(basename "$t")" "$t"
 done
 # The tools exit through tool_fail() with their grids still allocated,
@@ -44,11 +57,12 @@ done
 # in the library's unit tests above and by valgrind on a whole pipeline.
 for s in "$top"/tests/e2e/*.sh; do
 	case $s in */lib.sh) continue ;; esac
+	in_set "$(basename "$s")" || continue
 	ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" \
 	    run_one "$(basename "$s")" sh "$s"
 done
 # Man pages lint clean, when mandoc is here.
-if command -v mandoc >/dev/null 2>&1; then
+if [ "$set_" != long ] && command -v mandoc >/dev/null 2>&1; then
 	for m in "$top"/man/man*/*.[1-9]; do
 		[ -f "$m" ] || continue
 		if out=$(mandoc -Tlint -Wwarning "$m" 2>&1) && [ -z "$out" ]; then

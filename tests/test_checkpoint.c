@@ -4,6 +4,7 @@
  * indenter or other options are refused by rc_checkpoint_match, and a
  * truncated file or one whose fields are out of range is refused by
  * rc_checkpoint_read (never read as a checkpoint). */
+#include <inttypes.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -254,10 +255,23 @@ identity(void)
 	rc_grid_free(g);
 }
 
-/* Rewrite the good checkpoint with one metadata key changed (val NULL:
- * removed); reading it must fail with a message naming want. */
+/* A checkpoint edited on purpose gets its checkpoint.sum recomputed, so
+ * that the check under test, not the sum, decides. */
 static void
-refused(const char *key, const char *val, const char *want)
+reseal(rc_grid *g, int yes)
+{
+	rc_err err;
+
+	if (yes && rc_grid_meta_get(g, "checkpoint.sum") != NULL)
+		rc_grid_meta_setf(g, "checkpoint.sum", &err, "%016" PRIx64,
+		    rc_checkpoint_sum(g));
+}
+
+/* Rewrite the good checkpoint with one metadata key changed (val NULL:
+ * removed), resealed or not; reading it must fail with a message naming
+ * want. */
+static void
+refused_as(const char *key, const char *val, const char *want, int reseal_it)
 {
 	rc_grid *g;
 	rc_checkpoint c;
@@ -273,6 +287,7 @@ refused(const char *key, const char *val, const char *want)
 		rc_grid_meta_unset(g, key);
 	else
 		rc_grid_meta_set(g, key, val, &err);
+	reseal(g, reseal_it);
 	rc_grid_write(g, test_slot_path(1, "b.ck"), RC_FMT_SURF, &err);
 	rc_grid_free(g);
 	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "b.ck"), &err), -1,
@@ -281,6 +296,51 @@ refused(const char *key, const char *val, const char *want)
 	    val ? val : "(none)");
 	test_true(strstr(err.msg, want) != NULL, "%s = %s: message '%s' names %s",
 	    key, val ? val : "(none)", err.msg, want);
+}
+
+static void
+refused(const char *key, const char *val, const char *want)
+{
+	refused_as(key, val, want, 1);
+}
+
+/* Issue 27: an edited row, or an edited displacement, came out as a
+ * result.  Refused by the sum; a row whose p_star is not its pressure
+ * also without the sum (a version 4 file has none). */
+static void
+edited(void)
+{
+	rc_grid *g, *u = NULL;
+	rc_checkpoint c;
+	rc_err err;
+
+	refused_as("checkpoint.row.1", "0.3333333333333333\ta\\tb\\\\c\\sd\t0.9",
+	    "checkpoint.sum", 0);
+	refused("checkpoint.row.1", "0.25\tx\t0.5", "is not pressure 2");
+	refused_as("checkpoint.sum", "0123456789abcdeg", "checkpoint.sum", 0);
+	refused_as("checkpoint.sum", NULL, "checkpoint.sum", 0);
+	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
+	if (g == NULL) {
+		test_true(0, "re-read a.ck: %s", err.msg);
+		return;
+	}
+	g->z[5] = 1.8e56;
+	rc_grid_write(g, test_slot_path(1, "z.ck"), RC_FMT_SURF, &err);
+	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "z.ck"), &err), -1,
+	    "a displacement of 1.8e56 written in: refused");
+	test_true(strstr(err.msg, "checkpoint.sum") != NULL,
+	    "  by the sum ('%s')", err.msg);
+	/* version 4 (no sum): the row's p_star is still checked */
+	rc_grid_meta_set(g, "checkpoint.version", "4", &err);
+	rc_grid_meta_unset(g, "checkpoint.sum");
+	g->z[5] = 0;
+	rc_grid_meta_set(g, "checkpoint.row.0", "0.2\t\t0.5", &err);
+	rc_grid_write(g, test_slot_path(1, "v4.ck"), RC_FMT_SURF, &err);
+	rc_grid_free(g);
+	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "v4.ck"), &err), -1,
+	    "version 4 with row 0 at p_star 0.2 of 0.1: refused");
+	test_true(strstr(err.msg, "is not pressure 1") != NULL,
+	    "  naming the row ('%s')", err.msg);
 }
 
 /* A version 3 checkpoint (before the adhesive law was recorded): read,
@@ -367,7 +427,7 @@ bad_files(void)
 
 	/* Range checks: each field just outside what gfmd-solve accepts. */
 	refused("checkpoint.version", "1", "version");
-	refused("checkpoint.version", "5", "version");
+	refused("checkpoint.version", "6", "version");
 	refused("checkpoint.law", "linear", "checkpoint.law");
 	refused("checkpoint.law", NULL, "checkpoint.law");
 	refused("checkpoint.boundary", "torus", "checkpoint.boundary");
@@ -403,18 +463,21 @@ bad_files(void)
 	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
 	version2();
 	version3();
+	edited();
 	/* with adhesion any finite pressure (gfmd-solve takes them then) */
 	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);
 	if (g != NULL) {
 		rc_grid_meta_set(g, "checkpoint.adhesion", "0.001", &err);
-		rc_grid_meta_set(g, "checkpoint.pressures", "0.1,-1,0", &err);
+		rc_grid_meta_set(g, "checkpoint.pressures",
+		    "0.1,0.3333333333333333,-1,0", &err);
+		reseal(g, 1);
 		rc_grid_write(g, test_slot_path(1, "adh.ck"), RC_FMT_SURF, &err);
 		rc_grid_free(g);
 		test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "adh.ck"),
-		    &err), 0, "with adhesion: pressures 0.1,-1,0 read (%s)",
+		    &err), 0, "with adhesion: pressures 0.1,1/3,-1,0 read (%s)",
 		    err.msg);
-		test_true(c.npressures == 3 && c.pressures[1] == -1 &&
-		    c.pressures[2] == 0, "with adhesion: the pressures back");
+		test_true(c.npressures == 4 && c.pressures[2] == -1 &&
+		    c.pressures[3] == 0, "with adhesion: the pressures back");
 		rc_checkpoint_free(&c);
 		rc_grid_free(u);
 	}

@@ -669,11 +669,22 @@ read_grid(const struct tool *t, const char *path, const char *channel)
 	if (g == NULL)
 		tool_fail_at(t, rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
-	if (g->valid != NULL && !t->accept_missing)
+	if (g->valid != NULL && !t->accept_missing) {
+		size_t missing = rc_grid_missing_count(g), n = rc_grid_size(g);
+
+		rc_grid_free(g);	/* not leaked on the way out (issue 27) */
 		tool_fail(t, "%s: %zu of %zu points are missing (NaN); %s needs "
 		    "every point: fill them first with surfwarp --fill",
-		    rc_is_stdio(path) ? "standard input" : path,
-		    rc_grid_missing_count(g), rc_grid_size(g), t->name);
+		    rc_is_stdio(path) ? "standard input" : path, missing, n,
+		    t->name);
+	}
+	/* -L sizes formats that carry none; a file's own size wins, which
+	 * the user is told (issue 27: ignored without a word). */
+	if (t->have_l && (g->lx != t->lx || g->ly != t->ly))
+		tool_warn(t, "%s: -L %g,%g ignored: the file gives its size, "
+		    "%g x %g%s%s (-L sizes only a format that carries none)",
+		    rc_is_stdio(path) ? "standard input" : path, t->lx, t->ly,
+		    g->lx, g->ly, g->unit[0] ? " " : "", g->unit);
 	tool_grid_to_unit(t, g, path, t->unit);
 	return g;
 }

@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <sys/time.h>
 #include <unistd.h>
 
@@ -290,6 +291,14 @@ field_grid(const struct tool *t, const rc_grid *h, enum rc_kind kind,
 }
 
 /* Everything one run holds, so that main reads as the run's steps. */
+/* A file's identity, to remove at the end only the file this run wrote
+ * (or the checkpoint it resumed). */
+struct file_id {
+	dev_t dev;
+	ino_t ino;
+	int set;
+};
+
 struct run {
 	struct tool t;
 	struct gfmd_opts o;
@@ -309,6 +318,9 @@ struct run {
 	size_t nunconverged;
 	double last_p, last_p_star;
 	rc_checkpoint ck, saved;	/* written (--checkpoint), read (--resume) */
+	/* what is at --checkpoint: the checkpoint --resume read there, the
+	 * one this run wrote last; only those are removed at the end */
+	struct file_id ck_found, ck_written;
 	rc_grid *saved_u;
 	rc_atomic out;
 	rc_table_out table;
@@ -317,6 +329,62 @@ struct run {
 	struct progress pr;
 	struct sigaction sa;
 };
+
+/* The identity of the regular file path names (through links); 0 if
+ * there is none. */
+static int
+file_id(const char *path, struct file_id *id)
+{
+	struct stat st;
+
+	memset(id, 0, sizeof(*id));
+	if (path == NULL || rc_is_stdio(path) || stat(path, &st) != 0 ||
+	    !S_ISREG(st.st_mode))
+		return 0;
+	id->dev = st.st_dev;
+	id->ino = st.st_ino;
+	id->set = 1;
+	return 1;
+}
+
+static int
+same_file(const struct file_id *a, const struct file_id *b)
+{
+	return a->set && b->set && a->dev == b->dev && a->ino == b->ino;
+}
+
+/* --checkpoint FILE replaces FILE as the run goes and removes it at the
+ * end: an existing regular file there must be a checkpoint (or the one
+ * --resume reads), else it is the user's and the run is refused before
+ * any work (exit 2).  A device or FIFO is written, never removed. */
+static void
+checkpoint_target_check(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	struct file_id resume_id;
+	rc_checkpoint probe;
+	rc_grid *u;
+	rc_err err;
+
+	struct file_id found;
+
+	if (!file_id(o->ck_path, &found))
+		return;
+	if (file_id(o->resume_path, &resume_id) &&
+	    same_file(&found, &resume_id)) {
+		r->ck_found = found;
+		return;
+	}
+	if (rc_checkpoint_read(&probe, &u, o->ck_path, &err) == 0) {
+		rc_checkpoint_free(&probe);
+		rc_grid_free(u);
+		return;
+	}
+	tool_bad(&r->t, "--checkpoint %s: the file exists and is not a "
+	    "gfmd-solve checkpoint (%s); a checkpoint replaces it and is removed "
+	    "at the end: name a new file", o->ck_path, err.msg);
+	tool_usage_check(&r->t);
+}
 
 /* Options into r->o, checked together; 1 after --help. */
 static int
@@ -352,6 +420,7 @@ parse_options(struct run *r, int argc, char **argv)
 		if ((lock_fd = rc_checkpoint_lock(o->ck_path, &lock_path, &err)) == -1)
 			tool_fail(&r->t, "--checkpoint %s: %s", o->ck_path, err.msg);
 		atexit(unlock_at_exit);
+		checkpoint_target_check(r);
 	}
 	r->npressures = o->napproach ? o->napproach : o->nreduced ? o->nreduced :
 	    o->nabsolute;
@@ -474,6 +543,37 @@ checkpoint_setup(struct run *r)
 
 /* The boundary kind, the indenter's rms gradient gbar (the unit of p*)
  * and the checks on its scale. */
+/* Loads and layers past what doubles carry through the solve (issue 27:
+ * -p 1e300 and --thickness 1e300 ran 100000 iterations to "not
+ * converged"): the solver squares pressures and (q d) (energies, norms,
+ * the layer kernel), which overflow past about 1e154 (measured on 32^2:
+ * p* = 1e150 solves, 1e160 does not; d = 1e100 solves, 1e200 does not),
+ * so |p*| and d / max(lx, ly, height range) are refused past 1e100, a
+ * margin of 1e50 for the grid's factors.  Exit 2, before the solve. */
+#define RANGE_MAX 1e100
+static void
+range_check(struct run *r, double height_range)
+{
+	struct gfmd_opts *o = &r->o;
+	const rc_grid *h = r->h;
+	double side = fmax(fmax(h->lx, h->ly), height_range);
+
+	for (size_t k = 0; k < o->nreduced; k++)
+		if (!(fabs(o->reduced[k]) <= RANGE_MAX))
+			tool_bad(&r->t, "-p %g: out of range (|p*| <= %g)",
+			    o->reduced[k], RANGE_MAX);
+	for (size_t k = 0; k < o->nabsolute && r->gbar > 0; k++)
+		if (!(fabs(o->absolute[k]) / (o->modulus * r->gbar) <= RANGE_MAX))
+			tool_bad(&r->t, "--pressure-abs %g: out of range (p* = "
+			    "p/(E* gbar) = %g, want |p*| <= %g)", o->absolute[k],
+			    o->absolute[k] / (o->modulus * r->gbar), RANGE_MAX);
+	if (o->so.thickness > 0 && !(o->so.thickness <= RANGE_MAX * side))
+		tool_bad(&r->t, "--thickness %g: out of range (at most %g times "
+		    "the grid's side %g; a layer that thick is the half space: "
+		    "leave out --thickness)", o->so.thickness, RANGE_MAX, side);
+	tool_usage_check(&r->t);
+}
+
 /* Adhesion: l_adh / dx, and a warning when the grid does not resolve
  * the law (adhesion.h). */
 static void
@@ -536,7 +636,7 @@ indenter_setup(struct run *r)
 	if (o->nreduced && !(r->gbar > 0))
 		tool_fail(&r->t, "%s: the indenter is flat (rms gradient 0), so the "
 		    "reduced pressure p* = p/(E* gbar) is undefined; use --pressure-abs",
-		    name);
+		    name);	range_check(r, hi - lo);
 }
 
 /* The work ahead of the FFT plans, for the planning effort (fft.h): the
@@ -685,7 +785,9 @@ stop_inside(struct run *r, size_t k, double p, long iterations)
 		r->ck.solving = 1;
 		r->ck.iterations = iterations;
 		if (rc_checkpoint_write(&r->ck, rc_solver_displacement(r->solver),
-		    o->ck_path, &err) != 0) {
+		    o->ck_path, &err) == 0)
+			file_id(o->ck_path, &r->ck_written);
+		else {
 			if (stop_signal) {
 				keep_finished_rows(r, k);
 				tool_fail(&r->t, "interrupted by signal %d while "
@@ -839,9 +941,11 @@ checkpoint_after(struct run *r, size_t k)
 	r->ck.next = k + 1;
 	r->ck.solving = 0;
 	r->ck.iterations = 0;
-	if (rc_checkpoint_add_row(&r->ck, &r->row, &err) != 0 ||
+	if (rc_checkpoint_add_row(&r->ck, &r->row, &err) == 0 &&
 	    rc_checkpoint_write(&r->ck, rc_solver_displacement(r->solver),
-	    o->ck_path, &err) != 0) {
+	    o->ck_path, &err) == 0)
+		file_id(o->ck_path, &r->ck_written);
+	else {
 		if (stop_signal) {
 			keep_finished_rows(r, k + 1);
 			tool_fail(&r->t, "interrupted by signal %d after pressure "
@@ -976,8 +1080,15 @@ finish(struct run *r)
 		status = 1;
 	}
 	/* The run is complete: its checkpoint would only resume it again. */
-	if (o->ck_path != NULL && rc_atomic_remove(o->ck_path, &err) != 0)
-		tool_warn(&r->t, "%s", err.msg);
+	if (o->ck_path != NULL) {
+		struct file_id now;
+
+		if (file_id(o->ck_path, &now) &&
+		    (same_file(&now, &r->ck_written) ||
+		    same_file(&now, &r->ck_found)) &&
+		    rc_atomic_remove(o->ck_path, &err) != 0)
+			tool_warn(&r->t, "%s", err.msg);
+	}
 	if (o->ck_path != NULL || o->resume_path != NULL)
 		rc_checkpoint_free(&r->ck);
 	if (o->resume_path != NULL)

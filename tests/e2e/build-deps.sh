@@ -3,7 +3,7 @@
 # naming the Debian packages to install (not a compiler error on fftw3.h).
 . "$RC_TOP/tests/e2e/lib.sh"
 if ! command -v make >/dev/null 2>&1; then
-	echo "SKIP: make not installed"
+	echo "SKIP: make not installed (apt-get install make)"
 	echo "$T_PASS passed, $T_FAIL failed"
 	exit 0
 fi

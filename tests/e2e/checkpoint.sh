@@ -252,6 +252,16 @@ if [ -f ck3.surf ]; then
 	perl -pe 's/^meta\.checkpoint\.method = fire$/meta.checkpoint.method = fira/' ck3.surf > bad.surf
 	gfmd-solve -q --resume bad.surf s256.surf > /dev/null 2>err
 	check "checkpoint with an unknown method: refused" grep -q 'method = fira: unknown' err
+	# Issue 27: an edited a_r in a finished row came out as a result
+	# (exit 0); the checkpoint's sum refuses it.  The last digit of row 0
+	# changed (same length, the data offset stays).
+	perl -pe 's/(\d)$/($1 + 1) % 10/e if /^meta\.checkpoint\.row\.0 = /' \
+	    ck3.surf > bad.surf
+	if cmp -s bad.surf ck3.surf; then fail "edited row: the edit did nothing"; else
+		gfmd-solve -q --resume bad.surf s256.surf > /dev/null 2>err
+		check_rel "checkpoint with an edited row: exit 1" $? 1 0
+		check "  the sum names it ($(head -c 150 err))" grep -q 'checkpoint.sum' err
+	fi
 fi
 
 # --- One run per checkpoint: a second run on the same --checkpoint is
@@ -293,4 +303,26 @@ if [ $killed = 0 ] && grep -q 'going on' fullmsg; then
 else
 	skip 4 "unwritable checkpoint: the run ended before the signal (exit $st)"
 fi
+# --- Issue 27: --checkpoint removed whatever was at FILE at the end, also
+# a file that is not a checkpoint, through a link, or the surface read
+# from standard input.  Refused before any work (exit 2), nothing lost; a
+# run removes only the checkpoint it wrote.
+surfgen -n 32 -o s32.surf
+echo precious > precious.txt
+check_status "--checkpoint on a file that is not a checkpoint: exit 2" 2 \
+    gfmd-solve -q -p 0.05 --checkpoint precious.txt -o p.tsv s32.surf
+check "  says so" grep -q 'precious.txt: the file exists and is not a gfmd-solve checkpoint' "$T_TMP/stderr"
+check "  the file is kept" test "$(cat precious.txt)" = precious
+check "  no rows written" test ! -e p.tsv
+ln -s precious.txt plink.txt
+check_status "--checkpoint through a link to such a file: exit 2" 2 \
+    gfmd-solve -q -p 0.05 --checkpoint plink.txt -o p.tsv s32.surf
+check "  the target is kept" test "$(cat precious.txt)" = precious
+cp s32.surf keep.surf
+cat keep.surf | gfmd-solve -q -p 0.05 --checkpoint keep.surf > p.tsv 2>/dev/null
+check_rel "--checkpoint naming the surface read from standard input: exit 2" $? 2 0
+check "  the surface is kept" cmp -s keep.surf s32.surf
+gfmd-solve -q -p 0.05,0.1 --checkpoint new.surf -o p.tsv s32.surf
+check_rel "--checkpoint on a new name: exit 0" $? 0 0
+check "  its checkpoint removed at the end" test ! -e new.surf
 summary

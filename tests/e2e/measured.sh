@@ -88,7 +88,7 @@ print(struct.unpack("<d", d[i:i + 8])[0], d[u:d.find(b"\0", u)].decode(),
 		skip 2 "gwyddion --convert-to-gwy failed here: Gwyddion client check"
 	fi
 else
-	skip 3 "gwyddion not installed: Gwyddion client check (apt-get install gwyddion)"
+	skip 3 "gwyddion or python3 not installed: Gwyddion client check (apt-get install gwyddion python3)"
 fi
 
 # --- a twin in the map's unit ----------------------------------------------------

@@ -26,7 +26,7 @@ if command -v script >/dev/null 2>&1; then
 	check "surfgen --png - to a terminal is refused" grep -q "terminal; refusing" tty.out
 	check "nothing written when refused" [ ! -e u.surf ]
 else
-	skip 2 "script(1) not installed: binary output to a terminal not tested"
+	skip 2 "script(1) not installed: binary output to a terminal not tested (apt-get install bsdutils)"
 fi
 
 # --- outputs against inputs ------------------------------------------------

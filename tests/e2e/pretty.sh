@@ -33,7 +33,7 @@ if command -v script >/dev/null 2>&1; then
 	    [ "$(awk '{ print length($0) }' st-tty.txt | sort -u | wc -l)" -eq 1 ]
 	check "integers whole (nx 32)" grep -Eq '^nx +32$' st-tty.txt
 else
-	echo "SKIP: script(1) not installed, no pty test"
+	echo "SKIP: script(1) not installed, no pty test (apt-get install bsdutils)"
 fi
 
 # --pretty into a pipe, wide enough for columns: every numeric column's
