@@ -36,6 +36,7 @@ DEB_libpng = libpng-dev
 DEB_libzip = libzip-dev
 DEB_libxml-2.0 = libxml2-dev
 DEB_netcdf = libnetcdf-dev
+DEB_zlib = zlib1g-dev
 NODEP_GOALS = clean deps uninstall
 ifneq ($(filter-out $(NODEP_GOALS),$(or $(MAKECMDGOALS),all)),)
 HAVE_PKG_CONFIG := $(shell command -v $(PKG_CONFIG) >/dev/null 2>&1 && echo y)
