@@ -299,11 +299,12 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 		 * load is the tractions' sum */
 		load = w->mass0 > 0 ? fabs(ps.sum_ku_c + ps.sum_sa_f) /
 		    w->n_act : fabs(p) * spread;
-		/* load control: the state's mean traction (sigma_max may be
-		 * millions of times the load, which then passed unsolved);
-		 * with the level held, tractions near separation are tiny, so
-		 * the adhesive stress stays the scale there */
-		scale = control == RC__ADH_LOAD ?
+		/* a prescribed load: the state's mean traction (sigma_max may
+		 * be millions of times the load, which then passed unsolved);
+		 * with the level held (any control with mass0 > 0, the free
+		 * boundaries' approach too) tractions near separation are
+		 * tiny, so the adhesive stress stays the scale there */
+		scale = control == RC__ADH_LOAD && !(w->mass0 > 0) ?
 		    fmax(load, ps.sum_abs / w->n_act) : fmax(load, law->smax);
 		residual = sqrt(ps.sum_d2 / w->n_act) / scale;
 		if (control == RC__ADH_LEVEL && nf > 0)
