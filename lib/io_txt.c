@@ -19,7 +19,7 @@
  * they do not), a plain matrix is periodic, exports and columns
  * (measurements) are not.
  */
-#include "io_txt.h"
+#include "io_txt_internal.h"
 #include "units.h"
 
 #include <ctype.h>

@@ -15,7 +15,7 @@
  * header): a line is looked at in the input buffer and left unread when
  * it starts with a number.
  */
-#include "io_txt.h"
+#include "io_txt_internal.h"
 #include "units.h"
 
 #include <ctype.h>

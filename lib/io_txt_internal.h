@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* io_txt.h - private to the text reader: what the lines before the first
+/* io_txt_internal.h - private to the text reader: what the lines before the first
  * line of numbers say (io_txt_head.c reads them, io_txt.c the numbers).
  */
 #ifndef RC_IO_TXT_H
