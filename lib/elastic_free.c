@@ -9,27 +9,6 @@
 #include "elastic_layer_free.h"
 #include "grid.h"
 
-/* Integral of 1/r over [0, x] x [0, y], odd in x and in y. */
-static double
-love_h(double x, double y)
-{
-	double a = fabs(x), b = fabs(y), v;
-
-	if (a == 0 || b == 0)
-		return 0;
-	v = a * asinh(b / a) + b * asinh(a / b);
-	return (x < 0) != (y < 0) ? -v : v;
-}
-
-double
-rc_love_pixel(double x, double y, double dx, double dy)
-{
-	double hx = 0.5 * dx, hy = 0.5 * dy;
-
-	return (love_h(x + hx, y + hy) - love_h(x - hx, y + hy) -
-	    love_h(x + hx, y - hy) + love_h(x - hx, y - hy)) / M_PI;
-}
-
 /* Signed offset of padded index k on an axis of n given points (2n padded). */
 static double
 offset(size_t k, size_t n)

@@ -44,6 +44,7 @@
 
 #include "fft.h"
 #include "layer.h"
+#include "love.h"
 
 typedef struct rc_halfspace {
 	size_t nx, ny, n;	/* the given area; n = nx * ny */
@@ -54,9 +55,6 @@ typedef struct rc_halfspace {
 	rc_fft fft;		/* the 2nx x 2ny plans and buffers */
 	unsigned long n_pairs;	/* applications (padded transform pairs) */
 } rc_halfspace;
-
-/* Love's C(x, y) for a dx x dy pixel, per unit pressure, with E* = 1. */
-double rc_love_pixel(double x, double y, double dx, double dy);
 
 /* nx, ny >= 2 (a line has no free-boundary reference: the plane-strain
  * displacement grows logarithmically with distance). */

@@ -10,7 +10,7 @@
 #include <gsl/gsl_integration.h>
 #include <gsl/gsl_sf_bessel.h>
 
-#include "elastic_free.h"
+#include "love.h"
 
 #define S_MAX		24.0	/* w(s) < 1e-17 beyond, either substrate */
 #define S_POINTS	16	/* Gauss-Legendre points per s panel */

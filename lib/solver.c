@@ -1,33 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver.c - options, dispatch, state and accessors of the contact solvers.
- *
- * Convergence (one measure for both methods).  A method stops when the
- * residual of its current admissible pair
- *   u >= h  (elastic surface height, no penetration),
- *   sigma >= 0, sigma = 0 off the contact set  (no tension),
- * falls to opts.tol, where
- *   residual = max( rms_r[p + (K u)(r) - sigma(r)] / p,  |<sigma> - p| / p ).
- * The first term is the equilibrium of every point (the elastic pressure
- * that u needs, p + K u, must be supplied by the wall where in contact and
- * vanish elsewhere), measured in units of the applied pressure; the second
- * is load balance.  Both are scale-free (invariant under r -> s r, h -> t h
- * with p and E* scaled to keep p* fixed).  FIRE keeps u admissible and
- * takes sigma = max(p + K u, 0) on u = h; CG keeps sigma admissible and
- * takes u = h on its contact set, max(G sigma + c, h) elsewhere.
- *
- * Default tolerance: measured on a 256^2 rc_synth surface (H = 0.8,
- * lambda_r = L/2, lambda_s = L/64, gbar = 1, seed 1, p = 0.05 E* gbar,
- * a_r = 0.1093, 7163 contact points) against a reference solve at tol
- * 1e-13 (FIRE, 93 iterations; CG's floor from round-off is ~2e-11):
- *   tol     FIRE iterations, |a_r - ref|/ref    CG iterations, same
- *   1e-3     23   1.4e-4 (one point)             52   0
- *   1e-4     29   0                              59   0
- *   1e-6     43   0                              73   0
- *   1e-9     65   0                              94   0
- * (FIRE iterations cost two FFT pairs, CG's one or two: solver_fire.c,
- * solver_cg.c.)
- * The default 1e-6 leaves a margin of two decades over the first
- * tolerance at which every contact point is right.
+/* solver.c - the contact solver's state, its set-up (every option checked
+ * together), the dispatch of a solve to its method and the accessors.
+ * The options and their names are solver_opts.c; the convergence measure
+ * that every method stops on, solver_measure.c.
  *
  * Free boundaries (opts.boundary): the padded compliance of
  * elastic_free.h replaces K and G; without K the measure is the gap
@@ -52,57 +27,6 @@
  * ~1e-13; measured on 64^2: 0.58 for the half space and any layer with
  * Poisson 0.3, 4e-5 for a bonded incompressible one with d = 4 dx). */
 #define RC_FREE_EIG_MIN	1e-9
-
-void
-rc_solver_defaults(rc_solver_opts *o)
-{
-	memset(o, 0, sizeof(*o));
-	o->method = RC_METHOD_FIRE;
-	o->modulus = 1;
-	o->tol = 1e-6;
-	o->max_iter = 100000;
-	o->stall_window = RC_STALL_WINDOW;
-	o->fft_effort = RC_FFT_ESTIMATE;
-	o->fft_block_points = RC_FFT_BLOCKED_POINTS;
-}
-
-const char *
-rc_method_name(enum rc_method m)
-{
-	switch (m) {
-	case RC_METHOD_FIRE:
-		return "fire";
-	case RC_METHOD_CG:
-		return "cg";
-	}
-	return "unknown";
-}
-
-const char *
-rc_boundary_name(enum rc_boundary b)
-{
-	return b == RC_BOUNDARY_FREE ? "free" : "periodic";
-}
-
-int
-rc_boundary_parse(const char *name)
-{
-	if (strcmp(name, "periodic") == 0)
-		return RC_BOUNDARY_PERIODIC;
-	if (strcmp(name, "free") == 0)
-		return RC_BOUNDARY_FREE;
-	return -1;
-}
-
-int
-rc_method_parse(const char *name)
-{
-	if (strcmp(name, "fire") == 0)
-		return RC_METHOD_FIRE;
-	if (strcmp(name, "cg") == 0)
-		return RC_METHOD_CG;
-	return -1;
-}
 
 /* Whether the scratch field is needed: G t of the free CG, the force of
  * FIRE on pressures (free, or a hardness; the adhesive free FIRE has
@@ -362,42 +286,6 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	return r;
 }
 
-/* Scale the warm-start pressures to mean p (uniform p when they carry no
- * load: a first solve, or a state without contact). */
-void
-rc__sigma_to_load(rc_solver *s, double p)
-{
-	size_t k, n = s->n;
-	double sum = 0, *sigma = s->sigma;
-
-	if (s->have_sigma || s->have_u)
-		for (k = 0; k < n; k++)
-			sum += sigma[k];
-	if (!(sum > 0)) {
-		for (k = 0; k < n; k++)
-			sigma[k] = p;
-		sum = p * (double)n;
-	}
-	for (k = 0; k < n; k++)
-		sigma[k] *= p * (double)n / sum;
-	s->have_sigma = 1;
-}
-
-double
-rc__points(const rc_solver *s)
-{
-	return s->el.dist != NULL ? (double)s->el.n : (double)s->n;
-}
-
-double
-rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
-{
-	double n = rc__points(s);	/* the sums are global (solver_fire.c) */
-	double force = sqrt(sum_d2 / n) / p, load = fabs(sum_sigma / n - p) / p;
-
-	return force > load ? force : load;
-}
-
 const double *
 rc_solver_displacement(const rc_solver *s)
 {
@@ -458,12 +346,6 @@ rc_solver_approach(const rc_solver *s)
 	    (isfinite(s->k_uniform) ? s->last_pressure / s->k_uniform : 0);
 }
 
-int
-rc_solver_opts_adhesive(const rc_solver_opts *o)
-{
-	return o->adhesion > 0;
-}
-
 double
 rc_solver_adhesive_pressure(const rc_solver *s)
 {
@@ -474,12 +356,6 @@ double
 rc_solver_attractive_fraction(const rc_solver *s)
 {
 	return rc_solver_opts_adhesive(&s->opts) ? s->a_attr : 0;
-}
-
-int
-rc_solver_opts_plastic(const rc_solver_opts *o)
-{
-	return o->hardness > 0 && isfinite(o->hardness);
 }
 
 double

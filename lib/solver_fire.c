@@ -12,8 +12,9 @@
  *  1. f = -(p + K u): one FFT pair (lib/elastic.c).
  *  2. The wall: at a point on it (u = h) where f pushes into it (f < 0)
  *     the wall takes the force up, f_eff = 0, and the point is in contact
- *     (set C); elsewhere f_eff = f.  The residual (solver.c) falls out of
- *     this pass, so convergence is checked every iteration for free.
+ *     (set C); elsewhere f_eff = f.  The residual (solver_measure.c)
+ *     falls out of this pass, so convergence is checked every iteration
+ *     for free.
  *  3. The mass-weighted force a = M^-1 f_eff = IFFT[FFT(f_eff) / m_q]:
  *     the second FFT pair.  m_q = k_q for q != 0 (frequency 1 for every
  *     mode); m_0 (the mean height) see below.  Then a = 0 on C: a contact

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_impl.h - the state behind rc_solver, shared by solver.c (options,
- * dispatch, accessors, convergence measure), the methods (solver_fire.c,
+/* solver_impl.h - the state behind rc_solver, shared by solver.c (set-up,
+ * dispatch, accessors), solver_measure.c (convergence measure), the methods (solver_fire.c,
  * solver_fire_free.c, solver_cg.c, solver_cg_plastic.c) and displacement
  * control (solver_approach.c).  Private to the library. */
 #ifndef RC_SOLVER_IMPL_H
@@ -86,10 +86,10 @@ struct rc_solver {
 /* The number of points of the whole grid: s->n, or the global count of a
  * distributed operator (elastic.h), whose s->n is this process's rows. */
 double rc__points(const rc_solver *s);
-/* Both methods' convergence measure (see solver.c) from the sum over all
+/* Both methods' convergence measure (solver_measure.c) from the sum over all
  * points of (p + K u - sigma)^2 and the sum of sigma. */
 double rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma);
-/* Warm-start pressures scaled to mean p (solver.c). */
+/* Warm-start pressures scaled to mean p (solver_measure.c). */
 void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
@@ -97,7 +97,8 @@ int rc__fire_alloc(rc_solver *s, rc_err *err);
 /* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0 (solver_fire.c);
  * e's real buffer, returned. */
 double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
-/* FIRE with the adhesive law (solver_fire_adh.c): load control at p
+/* FIRE with the adhesive law (solver_fire_adh.c, its loop
+ * solver_fire_adh_loop.c): load control at p
  * (RC__ADH_LOAD), the mean height held at max h - delta (RC__ADH_LEVEL;
  * the pressure found into *p) or, a periodic layer, its rigid substrate
  * held at approach delta (RC__ADH_SUBSTRATE: the mean mode on the spring

@@ -1,0 +1,57 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* solver_measure.c - what every method of the solver shares about the
+ * load: the convergence measure and the warm start scaled to a load.
+ *
+ * Convergence (one measure for both methods).  A method stops when the
+ * residual of its current admissible pair
+ *   u >= h  (elastic surface height, no penetration),
+ *   sigma >= 0, sigma = 0 off the contact set  (no tension),
+ * falls to opts.tol, where
+ *   residual = max( rms_r[p + (K u)(r) - sigma(r)] / p,  |<sigma> - p| / p ).
+ * The first term is the equilibrium of every point (the elastic pressure
+ * that u needs, p + K u, must be supplied by the wall where in contact and
+ * vanish elsewhere), measured in units of the applied pressure; the second
+ * is load balance.  Both are scale-free (invariant under r -> s r, h -> t h
+ * with p and E* scaled to keep p* fixed).  FIRE keeps u admissible and
+ * takes sigma = max(p + K u, 0) on u = h; CG keeps sigma admissible and
+ * takes u = h on its contact set, max(G sigma + c, h) elsewhere.
+ */
+#include "solver_impl.h"
+
+#include <math.h>
+
+/* Scale the warm-start pressures to mean p (uniform p when they carry no
+ * load: a first solve, or a state without contact). */
+void
+rc__sigma_to_load(rc_solver *s, double p)
+{
+	size_t k, n = s->n;
+	double sum = 0, *sigma = s->sigma;
+
+	if (s->have_sigma || s->have_u)
+		for (k = 0; k < n; k++)
+			sum += sigma[k];
+	if (!(sum > 0)) {
+		for (k = 0; k < n; k++)
+			sigma[k] = p;
+		sum = p * (double)n;
+	}
+	for (k = 0; k < n; k++)
+		sigma[k] *= p * (double)n / sum;
+	s->have_sigma = 1;
+}
+
+double
+rc__points(const rc_solver *s)
+{
+	return s->el.dist != NULL ? (double)s->el.n : (double)s->n;
+}
+
+double
+rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
+{
+	double n = rc__points(s);	/* the sums are global (solver_fire.c) */
+	double force = sqrt(sum_d2 / n) / p, load = fabs(sum_sigma / n - p) / p;
+
+	return force > load ? force : load;
+}
