@@ -62,35 +62,8 @@
 
 #define REFRESH_EVERY	50
 #define PROGRESS_EVERY	50
-#define CHECK_EVERY	100
 #define DAMP_DEC	0.5
 #define DAMP_INC	1.5
-
-int
-rc__cg_next(rc_solver *s, double p, double bound, long it,
-    double (*check)(rc_solver *, double), double *residual, int *status)
-{
-	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-	    (s->opts.stop && *s->opts.stop) ||
-	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
-		*residual = check(s, p);
-		if (*residual <= s->opts.tol)
-			*status = 0;
-		return RC__CG_STOP;
-	}
-	/* The bound can stay far above the residual (seen on strongly
-	 * warped surfaces: residual below tol for thousands of
-	 * iterations); check the residual itself now and then. */
-	if (it > 0 && it % CHECK_EVERY == 0) {
-		*residual = check(s, p);
-		if (*residual <= s->opts.tol) {
-			*status = 0;
-			return RC__CG_STOP;
-		}
-		return RC__CG_STALE;
-	}
-	return RC__CG_GO;
-}
 
 int
 rc__cg_alloc(rc_solver *s, rc_err *err)
@@ -103,86 +76,6 @@ rc__cg_alloc(rc_solver *s, rc_err *err)
 		return rc_seterr(err, "out of memory (asked for %zu bytes of CG buffers)",
 		    3 * s->n * sizeof(double));
 	return 0;
-}
-
-/* out = G x: the periodic compliance (mean zero) or the free one. */
-void
-rc__compliance(rc_solver *s, const double *x, double *out)
-{
-	if (s->free_bc)
-		rc_halfspace_apply(&s->fel, x, out);
-	else
-		rc_elastic_displacement(&s->el, x, out);
-}
-
-/* The stiffness scale of the convergence bound (see the top). */
-double
-rc__stiffness_max(const rc_solver *s)
-{
-	double dx = s->lx / (double)s->nx, dy = s->ly / (double)s->ny;
-	double q = M_PI * sqrt(1 / (dx * dx) + 1 / (dy * dy));
-
-	if (!s->free_bc)
-		return s->el.k_max;
-	/* a layer: its k_q at the zone corner (stiffer than the half space) */
-	return 0.5 * q * s->opts.modulus * rc_layer_factor(q * s->opts.thickness,
-	    s->opts.substrate, s->opts.poisson);
-}
-
-/* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */
-size_t
-rc__level(const rc_solver *s, double *c)
-{
-	size_t k, on = 0;
-	double sum = 0;
-	const double *sigma = s->sigma, *disp = s->u, *h = s->height;
-
-#pragma omp parallel for reduction(+:sum, on) schedule(static)
-	for (k = 0; k < s->n; k++)
-		if (sigma[k] > 0) {
-			sum += h[k] - disp[k];
-			on++;
-		}
-	*c = on ? sum / (double)on : 0;
-	return on;
-}
-
-/* Free boundaries: the measure of the top of this file for (u', sigma);
- * leaves u' in s->u, the contact set, the level c and the elastic energy
- * (1/2) <sigma w>.  s->u holds w = G sigma on entry. */
-double
-rc__final_check_free(rc_solver *s, double p)
-{
-	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
-	double *u = s->u;
-	const double *h = s->height, *sigma = s->sigma;
-
-	rc__level(s, &c);
-	s->level = c;
-#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
-	for (k = 0; k < n; k++) {
-		double v = u[k] + c, up = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
-
-		s->contact[k] = sigma[k] > 0;
-		sum_d2 += (up - v) * (up - v);
-		sum_s += sigma[k];
-		sum_e += sigma[k] * u[k];
-		u[k] = up;
-	}
-	return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
-}
-
-double
-rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
-    double sum_e)
-{
-	double n = (double)s->n, force, load;
-
-	s->energy = 0.5 * sum_e / n;
-	force = rc__stiffness_max(s) * sqrt(sum_d2 / n) / p;
-	load = fabs(sum_s / n - p) / p;
-	return force > load ? force : load;
 }
 
 /* Residual of (u', sigma); leaves u' in s->u, the contact set and the
@@ -216,50 +109,6 @@ final_check(rc_solver *s, double p)
 	}
 	s->energy = 0.5 * sum_e / (double)n;
 	return rc__residual(s, p, sum_d2, sum_s);
-}
-
-/* Self-compliance of one point, G_00 = (1/N) sum_{q != 0} 1/k_q: the lift
- * of a point (against the mean) under a unit pressure on it alone. */
-double
-rc__self_compliance(const rc_elastic *e)
-{
-	size_t i, j;
-	double sum = 0;
-
-	for (j = 0; j < e->ny; j++)
-		for (i = 0; i < e->nxc; i++) {
-			double k = e->stiffness[j * e->nxc + i];
-
-			if (k > 0)
-				sum += rc_fft_weight(i, e->nx) / k;
-		}
-	return sum / (double)e->n;
-}
-
-/* Initial pressure: the previous solution rescaled, the pressure a loaded
- * displacement implies, or uniform. */
-void
-rc__cg_initial_pressure(rc_solver *s, double p)
-{
-	size_t k, n = s->n;
-	double *sigma = s->sigma;
-
-	if (!s->have_sigma && s->have_u && s->free_bc) {
-		/* No K to find the pressure u needs: start uniform on the
-		 * points u touches. */
-		for (k = 0; k < n; k++)
-			sigma[k] = s->u[k] <= s->height[k] ? p : 0;
-	} else if (!s->have_sigma && s->have_u) {
-		double *ku = s->el.fft.real;
-
-		rc_elastic_force(&s->el, s->u, ku);
-		for (k = 0; k < n; k++) {
-			double v = p + ku[k];
-
-			sigma[k] = s->u[k] <= s->height[k] && v > 0 ? v : 0;
-		}
-	}
-	rc__sigma_to_load(s, p);
 }
 
 /* Long: one Polonsky-Keer iteration: its passes share the sums and the

@@ -514,16 +514,3 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	res->residual = residual;
 	return status;
 }
-
-/* Step 3 without the clamp: a = M^-1 f_eff into the operator's real
- * buffer (returned); m_q = k_q, m_0 = mass0.  Also the adhesive loop's
- * (solver_fire_adh.c). */
-double *
-rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0)
-{
-	double inv_n = 1.0 / (double)e->n;
-	rc_fft_multiplier mu = { e->stiffness, inv_n, 1, inv_n / mass0 };
-
-	rc_elastic_convolve(e, f, e->fft.real, &mu);
-	return e->fft.real;
-}

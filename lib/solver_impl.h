@@ -1,8 +1,19 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_impl.h - the state behind rc_solver, shared by solver.c (set-up,
- * dispatch, accessors), solver_measure.c (convergence measure), the methods (solver_fire.c,
- * solver_fire_free.c, solver_cg.c, solver_cg_plastic.c) and displacement
- * control (solver_approach.c).  Private to the library. */
+/* solver_impl.h - the state behind rc_solver and the parts of the solver,
+ * private to the library.  Layers, each file calling only those below it
+ * (tests/e2e/callgraph.sh checks that no file calls back up):
+ *   drivers: solver.c (set-up, dispatch, accessors), solver_approach.c
+ *     (displacement control), solver_fire_adh.c and
+ *     solver_fire_adh_free.c (the adhesive solve on periodic and free
+ *     boundaries);
+ *   minimisers: solver_fire.c (FIRE in heights), solver_fire_free.c
+ *     (FIRE on pressures), solver_cg.c, solver_cg_plastic.c (CG),
+ *     solver_fire_adh_loop.c (adhesive FIRE in heights);
+ *   the operator (solver_operator.c: G, FIRE's mass, the stiffness
+ *     scale), the interactions (solver_wall.c: the hard wall of the
+ *     pressure methods; solver_hardness.c: the hardness cap; adhesion.c:
+ *     the adhesive laws) and the convergence measure (solver_measure.c);
+ *   below them elastic*.c, layer.c, love.c, fft.c. */
 #ifndef RC_SOLVER_IMPL_H
 #define RC_SOLVER_IMPL_H
 
@@ -94,8 +105,8 @@ void rc__sigma_to_load(rc_solver *s, double p);
 int rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err);
 int rc__fire_alloc(rc_solver *s, rc_err *err);
-/* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0 (solver_fire.c);
- * e's real buffer, returned. */
+/* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0
+ * (solver_operator.c); e's real buffer, returned. */
 double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
 /* FIRE with the adhesive law (solver_fire_adh.c, its loop
  * solver_fire_adh_loop.c): load control at p
@@ -138,16 +149,17 @@ void rc__adh_free_release(rc_solver *s);
 size_t rc__adh_free_bytes(const rc_solver *s);
 int rc__fire_adh_free_solve(rc_solver *s, const struct rc_adhesion *law,
     int control, double *p, double delta, rc_solve_result *res);
-/* Free boundaries (solver_cg.c): the rigid level c = <h - G sigma> over
- * {sigma > 0} (returns its size); the convergence measure and the
- * admissible u' from s->u = G sigma (leaves u', the contact set, level
- * and energy); the stiffness scale of that measure.  FIRE on pressures
- * (solver_fire_free.c). */
+/* The hard wall of the pressure methods (solver_wall.c): the rigid level
+ * c = <h - G sigma> over {sigma > 0} (returns its size); on free
+ * boundaries the convergence measure and the admissible u' from s->u =
+ * G sigma (leaves u', the contact set, level and energy).  The stiffness
+ * scale of that measure (solver_operator.c). */
 size_t rc__level(const rc_solver *s, double *c);
 double rc__final_check_free(rc_solver *s, double p);
 /* That measure, max(k_max rms(u' - u) / p, |<sigma> - p| / p), from the
  * sums over all points of (u' - u)^2, sigma and sigma u; sets the
- * elastic energy (1/2) <sigma u>.  Both CG variants. */
+ * elastic energy (1/2) <sigma u>.  Both CG variants and FIRE on
+ * pressures (solver_wall.c). */
 double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
     double sum_e);
 double rc__stiffness_max(const rc_solver *s);
@@ -156,14 +168,14 @@ double rc__stiffness_max(const rc_solver *s);
 int rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
-/* Shared by solver_cg.c, solver_cg_plastic.c (and, out = G x and the
- * start, FIRE on pressures): out = G x; G_00 of the
- * periodic compliance; the CG start pressure of mean p (unbounded). */
+/* The operator (solver_operator.c): out = G x; G_00 of the periodic
+ * compliance.  The start pressure of mean p (unbounded) of both pressure
+ * methods (solver_wall.c). */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
 void rc__cg_initial_pressure(rc_solver *s, double p);
-/* The stopping rule of both CG variants (solver_cg.c; FIRE with a
- * hardness on periodic boundaries too), after iteration it
+/* The stopping rule of the pressure methods (solver_measure.c: both CG
+ * variants and FIRE on pressures), after iteration it
  * has its gap bound: STOP (the final check ran: *residual, and *status 0
  * if it met opts.tol), STALE (a periodic check of the residual itself
  * ran and missed: the iterate must be recomputed) or GO. */
@@ -173,8 +185,8 @@ int rc__cg_next(rc_solver *s, double p, double bound, long it,
 /* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
 int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
-/* Shared by that CG and FIRE on pressures with a hardness
- * (solver_fire_free.c), from solver_cg_plastic.c: the level c fitted over
+/* The hardness cap (solver_hardness.c), shared by that CG and FIRE on
+ * pressures with a hardness (solver_fire_free.c): the level c fitted over
  * 0 < sigma < H (returns the count of sigma > 0); the load restored to
  * mean p within [0, H] (disp: G sigma kept in step, or NULL; returns 1 if
  * G sigma is stale); the convergence measure of (u', sigma) from s->u =

@@ -55,3 +55,33 @@ rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 
 	return force > load ? force : load;
 }
+
+/* The bound can stay far above the residual: the pressure methods check
+ * the residual itself every CHECK_EVERY iterations (rc__cg_next). */
+#define CHECK_EVERY	100
+
+int
+rc__cg_next(rc_solver *s, double p, double bound, long it,
+    double (*check)(rc_solver *, double), double *residual, int *status)
+{
+	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
+	    (s->opts.stop && *s->opts.stop) ||
+	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
+		*residual = check(s, p);
+		if (*residual <= s->opts.tol)
+			*status = 0;
+		return RC__CG_STOP;
+	}
+	/* The bound can stay far above the residual (seen on strongly
+	 * warped surfaces: residual below tol for thousands of
+	 * iterations); check the residual itself now and then. */
+	if (it > 0 && it % CHECK_EVERY == 0) {
+		*residual = check(s, p);
+		if (*residual <= s->opts.tol) {
+			*status = 0;
+			return RC__CG_STOP;
+		}
+		return RC__CG_STALE;
+	}
+	return RC__CG_GO;
+}

@@ -10,23 +10,38 @@
 # that call each other), which it must find.
 . "$RC_TOP/tests/e2e/lib.sh"
 
-# The objects: those of the build that made $RC_BIN (build/san for
-# SANITIZE=1, whose tools are in build/san/bin), else build/.
+# The objects: $RC_OBJ if set, else those of the build that made $RC_BIN
+# (build/san for SANITIZE=1, whose tools are in build/san/bin), else
+# build/.
 objdir=""
-for d in "$RC_BIN/../lib" "$RC_TOP/build/lib"; do
+for d in ${RC_OBJ:+"$RC_OBJ"} "$RC_BIN/../lib" "$RC_TOP/build/lib"; do
 	if [ -n "$(find "$d" -name '*.o' 2>/dev/null | head -n 1)" ]; then
 		objdir=$(cd "$d" && pwd); break
 	fi
 done
 
-# circles DIR: prints one line per circle, "a.o -> b.o (sym) -> a.o
-# (sym)", for the objects under DIR (the MPI build's lib/mpi aside)
-circles() {
+# symbols DIR: "D file sym" and "U file sym" for the objects under DIR
+# (the MPI build's lib/mpi aside), file the path under DIR
+symbols() {
 	find "$1" -name '*.o' ! -path '*/mpi/*' | sort | while read -r o; do
 		f=${o#"$1"/}
 		nm -g --defined-only "$o" | awk -v f="$f" 'NF >= 3 { print "D", f, $3 }'
 		nm -u "$o" | awk -v f="$f" '{ print "U", f, $NF }'
-	done | awk '
+	done
+}
+
+# edges DIR: "a.o b.o sym", a.o uses sym defined in b.o, one line per pair
+edges() {
+	symbols "$1" | awk '$1 == "D" { def[$3] = $2; next } { use[++u] = $2 " " $3 }
+	END { for (k = 1; k <= u; k++) { split(use[k], p, " ")
+		if ((p[2] in def) && def[p[2]] != p[1] && !((p[1], def[p[2]]) in e)) {
+			e[p[1], def[p[2]]] = 1; print p[1], def[p[2]], p[2] } } }'
+}
+
+# circles DIR: prints one line per circle, "a.o -> b.o (sym) -> a.o
+# (sym)", for the objects under DIR
+circles() {
+	symbols "$1" | awk '
 	$1 == "D" { def[$3] = $2; if (!($2 in id)) { id[$2] = ++n; name[n] = $2 } ; next }
 	{ if (!($2 in id)) { id[$2] = ++n; name[n] = $2 }; use[++u] = $2 SUBSEP $3 }
 	END {
@@ -93,6 +108,30 @@ else
 	skip 3 "no C compiler to build the checker's own circle"
 fi
 
+# The solver's layers, top down (lib/solver_impl.h): a file uses files
+# of lower layers only, and of its own layer unless that is the
+# minimisers' (a method does not call another).
+layer_of() {
+	case ${1##*/} in
+	solver.o|solver_approach.o|solver_fire_adh.o|solver_fire_adh_free.o) echo "4 drivers" ;;
+	solver_fire.o|solver_fire_free.o|solver_cg.o|solver_cg_plastic.o|solver_fire_adh_loop.o) echo "3 minimisers" ;;
+	solver_operator.o|solver_wall.o|solver_hardness.o|solver_measure.o|adhesion.o) echo "2 parts" ;;
+	solver_opts.o|elastic*.o|layer.o|love.o|fft.o|threads.o|rc_err.o) echo "1 below" ;;
+	*) echo "" ;;
+	esac
+}
+# layering DIR: one line per edge against the layers
+layering() {
+	edges "$1" | while read -r a b sym; do
+		la=$(layer_of "$a"); lb=$(layer_of "$b")
+		[ -n "$la" ] && [ -n "$lb" ] || continue
+		if [ "${la%% *}" -lt "${lb%% *}" ] ||
+		    { [ "$la" = "$lb" ] && [ "${la#* }" = minimisers ]; }; then
+			echo "$a (${la#* }) uses $sym of $b (${lb#* })"
+		fi
+	done
+}
+
 if [ -z "$objdir" ]; then
 	fail "no library objects under $RC_BIN/../lib or $RC_TOP/build/lib: build first"
 else
@@ -104,6 +143,18 @@ else
 	else
 		printf '%s\n' "$found" | while read -r c; do echo "CIRCLE: $c"; done
 		fail "call circles in the library: $(printf '%s\n' "$found" | grep -c .)"
+	fi
+	n_solver=0
+	for f in solver solver_fire solver_cg solver_measure solver_operator; do
+		[ -f "$(find "$objdir" -name "$f.o" | head -n 1)" ] && n_solver=$((n_solver + 1))
+	done
+	check "the solver's layered files are there ($n_solver of 5)" [ "$n_solver" = 5 ]
+	up=$(layering "$objdir")
+	if [ -z "$up" ]; then
+		pass "the solver's files call down their layers only"
+	else
+		printf '%s\n' "$up" | while read -r c; do echo "UPWARD: $c"; done
+		fail "calls up or across the solver's layers: $(printf '%s\n' "$up" | grep -c .)"
 	fi
 fi
 summary
