@@ -194,8 +194,7 @@ contact_pressure(rc_solver *s, double p)
 
 /* The FIRE parameters of one step, set from the power of the state. */
 struct fire_step {
-	double dt, alpha;
-	long npos;		/* positive-power steps in a row */
+	rc__fire f;		/* dt, alpha, the positive steps in a row */
 	int restart;		/* this step: P <= 0, so v = 0 */
 	double mix_v, mix_a;	/* v = mix_v (v + dt a) + mix_a a */
 };
@@ -204,17 +203,7 @@ struct fire_step {
 static void
 fire_schedule(struct fire_step *st, double power)
 {
-	st->restart = !(power > 0);
-	if (!st->restart) {
-		if (++st->npos > RC_FIRE_N_MIN) {
-			st->dt = fmin(st->dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
-			st->alpha *= RC_FIRE_F_ALPHA;
-		}
-	} else {
-		st->npos = 0;
-		st->dt *= RC_FIRE_F_DEC;
-		st->alpha = RC_FIRE_ALPHA_START;
-	}
+	st->restart = rc__fire_adapt(&st->f, power, RC_FIRE_DT_MAX);
 }
 
 /* The sums for the FIRE 2.0 mixing over k0 <= k < k1, |v + dt a|^2 =
@@ -255,20 +244,8 @@ mixing_range(const rc_solver *s, const double *a, int restart, size_t k0,
 static void
 fire_mixing(const rc_solver *s, struct fire_step *st, double *sums)
 {
-	double aa, av, vv, dt = st->dt;
-
 	rc_elastic_sum(&s->el, sums, 3);
-	aa = sums[0];
-	av = sums[1];
-	vv = sums[2];
-	st->mix_v = 1;
-	st->mix_a = 0;
-	if (aa > 0) {
-		double vn2 = vv + 2 * dt * av + dt * dt * aa;
-
-		st->mix_v = 1 - st->alpha;
-		st->mix_a = st->alpha * sqrt(vn2 / aa);
-	}
+	rc__fire_mix(&st->f, sums[0], sums[1], sums[2], &st->mix_v, &st->mix_a);
 }
 
 /* Steps 4 and 5 on k0 <= k < k1: the velocity and the clamped position. */
@@ -279,7 +256,7 @@ update_range(rc_solver *s, const double *a, const struct fire_step *st,
 	const unsigned char *contact = s->contact;
 	const double *h = s->height;
 	double *u = s->u, *v = s->fire_vel;
-	double dt = st->dt, mix_v = st->mix_v, mix_a = st->mix_a;
+	double dt = st->f.dt, mix_v = st->mix_v, mix_a = st->mix_a;
 	int restart = st->restart;
 	size_t k;
 
@@ -391,7 +368,7 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 	rc_fft *f = &e->fft;
 	size_t nb = rc_fft_row_blocks(f), nx = e->nx, n_contact, b;
 	double *a = f->real, inv_n = 1.0 / (double)e->n;
-	struct fire_step st = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0, 0, 1, 0 };
+	struct fire_step st = { RC__FIRE_START, 0, 1, 0 };
 	rc_fft_multiplier stiff = { e->stiffness, inv_n, 0, 0 };
 	rc_fft_multiplier mass = { e->stiffness, inv_n, 1, 0 };
 	double *table = mass_table(e, inv_n);
@@ -463,7 +440,7 @@ fire_plain(rc_solver *s, double p, double *residual, int *status)
 {
 	rc_elastic *e = &s->el;
 	size_t n = s->n, nb = (n + CHUNK - 1) / CHUNK, n_contact, b;
-	struct fire_step st = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0, 0, 1, 0 };
+	struct fire_step st = { RC__FIRE_START, 0, 1, 0 };
 	double inv_n = 1.0 / (double)e->n, *table = mass_table(e, inv_n);
 	rc_fft_multiplier tabled = { table, 1.0, 0, 0 };
 	long it;

@@ -89,43 +89,6 @@
 
 #include "adhesion.h"
 
-/* FIRE's step size and mixing (the rules of solver_fire.c). */
-struct fire {
-	double dt, alpha;
-	long npos;
-};
-
-/* After a step of power pw: 1 on a restart (pw <= 0). */
-static int
-fire_adapt(struct fire *fs, double pw)
-{
-	if (!(pw > 0)) {
-		fs->npos = 0;
-		fs->dt *= RC_FIRE_F_DEC;
-		fs->alpha = RC_FIRE_ALPHA_START;
-		return 1;
-	}
-	if (++fs->npos > RC_FIRE_N_MIN) {
-		fs->dt = fmin(fs->dt * RC_FIRE_F_INC, RC_FIRE_DT_MAX);
-		fs->alpha *= RC_FIRE_F_ALPHA;
-	}
-	return 0;
-}
-
-/* FIRE 2.0's mixing v' = mv (v + dt a) + ma a, |v'| from the sums. */
-static void
-fire_weights(const struct fire *fs, double aa, double av, double vv,
-    double *mv, double *ma)
-{
-	*mv = 1;
-	*ma = 0;
-	if (aa > 0) {
-		*mv = 1 - fs->alpha;
-		*ma = fs->alpha * sqrt((vv + 2 * fs->dt * av +
-		    fs->dt * fs->dt * aa) / aa);
-	}
-}
-
 struct adh_pass {
 	size_t on;		/* contact points */
 	double sum_d2;		/* sum of d^2 off contact */
@@ -191,7 +154,7 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
     rc_solve_result *res)
 {
 	size_t n = w->n, k;
-	struct fire fs = { RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0 };
+	rc__fire fs = RC__FIRE_START;
 	double residual = HUGE_VAL, *u = w->u, *v = w->v, p = *pp;
 	double k0 = w->spring;
 	const double *h = w->h;
@@ -260,7 +223,7 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 		if (control == RC__ADH_SUBSTRATE && mass0 < k0)
 			mass0 = k0;
 		a = rc__fire_mass_weighted(w->el, w->f, mass0);
-		restart = fire_adapt(&fs, ps.power);
+		restart = rc__fire_adapt(&fs, ps.power, RC_FIRE_DT_MAX);
 		/* Displacement control: the step's mean over F removed
 		 * first (a = 0 on C, v = 0 on a restart). */
 #pragma omp parallel for reduction(+:aa, av, vv, sa_f, sv) schedule(static)
@@ -278,7 +241,7 @@ rc__adh_loop(const rc__adh_view *w, const rc_adhesion *law, int control,
 			aa -= (double)nf * shift * shift;
 			av -= shift * sv;
 		}
-		fire_weights(&fs, aa, av, vv, &mix_v, &mix_a);
+		rc__fire_mix(&fs, aa, av, vv, &mix_v, &mix_a);
 		/* the new mean on the way (the substrate's load, next) */
 #pragma omp parallel for reduction(+:usum) schedule(static)
 		for (k = 0; k < n; k++) {

@@ -17,6 +17,8 @@
 #ifndef RC_SOLVER_IMPL_H
 #define RC_SOLVER_IMPL_H
 
+#include <math.h>
+
 #include "elastic.h"
 #include "elastic_free.h"
 #include "solver.h"
@@ -220,5 +222,47 @@ rc__plastic_active(double sigma, double g, double H)
 #define RC_FIRE_F_ALPHA		0.99
 #define RC_FIRE_M0_SCALE	2.0
 #define RC_FIRE_PROGRESS_EVERY	50
+
+/* FIRE's schedule and mixing, written once for its loops (solver_fire.c
+ * says what they are): after a step of power P, dt and alpha grow when
+ * P > 0 (after RC_FIRE_N_MIN such steps in a row; dt up to dt_max), else
+ * the step restarts (v = 0; returns 1) with a smaller dt and alpha reset;
+ * the FIRE 2.0 mixing v' = mix_v (v + dt a) + mix_a a, |v'| = |v + dt a|,
+ * from the sums |a|^2, a.v and |v|^2. */
+typedef struct rc__fire {
+	double dt, alpha;
+	long npos;		/* positive-power steps in a row */
+} rc__fire;
+#define RC__FIRE_START	{ RC_FIRE_DT_START, RC_FIRE_ALPHA_START, 0 }
+
+static inline int
+rc__fire_adapt(rc__fire *fs, double power, double dt_max)
+{
+	if (!(power > 0)) {
+		fs->npos = 0;
+		fs->dt *= RC_FIRE_F_DEC;
+		fs->alpha = RC_FIRE_ALPHA_START;
+		return 1;
+	}
+	if (++fs->npos > RC_FIRE_N_MIN) {
+		fs->dt = fmin(fs->dt * RC_FIRE_F_INC, dt_max);
+		fs->alpha *= RC_FIRE_F_ALPHA;
+	}
+	return 0;
+}
+
+static inline void
+rc__fire_mix(const rc__fire *fs, double aa, double av, double vv,
+    double *mix_v, double *mix_a)
+{
+	*mix_v = 1;
+	*mix_a = 0;
+	if (aa > 0) {
+		double vn2 = vv + 2 * fs->dt * av + fs->dt * fs->dt * aa;
+
+		*mix_v = 1 - fs->alpha;
+		*mix_a = fs->alpha * sqrt(vn2 / aa);
+	}
+}
 
 #endif
