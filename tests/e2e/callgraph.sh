@@ -10,15 +10,21 @@
 # that call each other), which it must find.
 . "$RC_TOP/tests/e2e/lib.sh"
 
-# The objects: $RC_OBJ if set, else those of the build that made $RC_BIN
-# (build/san for SANITIZE=1, whose tools are in build/san/bin), else
-# build/.
+# The objects: those of the library archive of the build that made
+# $RC_BIN (build/san/librc.a for SANITIZE=1, whose tools are in
+# build/san/bin), else build/librc.a, unpacked (a build directory can
+# hold stale objects of files since moved); or those under $RC_OBJ.
 objdir=""
-for d in ${RC_OBJ:+"$RC_OBJ"} "$RC_BIN/../lib" "$RC_TOP/build/lib"; do
-	if [ -n "$(find "$d" -name '*.o' 2>/dev/null | head -n 1)" ]; then
-		objdir=$(cd "$d" && pwd); break
-	fi
-done
+if [ -n "${RC_OBJ:-}" ]; then
+	objdir=$RC_OBJ
+else
+	for a in "$RC_BIN/../librc.a" "$RC_TOP/build/librc.a"; do
+		if [ -f "$a" ]; then
+			mkdir -p "$T_TMP/lib" && (cd "$T_TMP/lib" && ar x "$a") && objdir="$T_TMP/lib"
+			break
+		fi
+	done
+fi
 
 # symbols DIR: "D file sym" and "U file sym" for the objects under DIR
 # (the MPI build's lib/mpi aside), file the path under DIR
@@ -133,7 +139,7 @@ layering() {
 }
 
 if [ -z "$objdir" ]; then
-	fail "no library objects under $RC_BIN/../lib or $RC_TOP/build/lib: build first"
+	fail "no library archive $RC_BIN/../librc.a or $RC_TOP/build/librc.a: build first"
 else
 	nobj=$(find "$objdir" -name '*.o' ! -path '*/mpi/*' | grep -c .)
 	check "the library has objects to check ($nobj)" [ "$nobj" -gt 20 ]
