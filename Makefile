@@ -60,7 +60,7 @@ $(info roughcontact: all build and test dependencies at once: make deps (as root
 $(error missing build dependencies)
 endif
 endif
-ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) -Ilib -Itools $(PKG_CFLAGS) \
+ALL_CFLAGS = $(STD) $(WARN) -fopenmp $(CFLAGS) $(SAN_FLAGS) $(LIB_DIRS:%=-I%) -Itools $(PKG_CFLAGS) \
 	$(DLOPEN_CFLAGS)
 LDLIBS   = -lfftw3_omp $(PKG_LIBS) -lm
 ALL_LDFLAGS = -fopenmp $(SAN_FLAGS) $(LDFLAGS)
@@ -74,7 +74,10 @@ O   = build
 BIN = bin
 endif
 
-LIB_SRC  = $(wildcard lib/*.c)
+# lib/ and its module folders (lib/solver: the contact solver; lib/elastic:
+# its elastic operators); lib/mpi is the MPI build's
+LIB_DIRS = lib lib/solver lib/elastic
+LIB_SRC  = $(wildcard $(LIB_DIRS:%=%/*.c))
 LIB_OBJ  = $(LIB_SRC:%.c=$(O)/%.o)
 LIB      = $(O)/librc.a
 TOOL_SHARED = tools/common.c tools/surfgen_opts.c tools/gfmd_opts.c \
@@ -162,10 +165,10 @@ demo: $(TOOLS)
 	@RC_BIN=$(BIN) sh data/demo.sh
 
 # The library is installed as libroughcontact.a with its public headers
-# (every lib/*.h but the *_internal.h and *_impl.h ones) under
+# (every header of $(LIB_DIRS) but the *_internal.h and *_impl.h ones) under
 # include/roughcontact/, an umbrella header roughcontact.h that includes
 # them all, and roughcontact.pc for pkg-config.
-PUB_HDR = $(filter-out %_internal.h %_impl.h,$(wildcard lib/*.h))
+PUB_HDR = $(filter-out %_internal.h %_impl.h,$(wildcard $(LIB_DIRS:%=%/*.h)))
 LIBDIR  ?= $(PREFIX)/lib
 INCDIR  ?= $(PREFIX)/include/roughcontact
 PCDIR   ?= $(LIBDIR)/pkgconfig
@@ -225,7 +228,7 @@ clean:
 FUZZ_SECONDS ?= 60
 FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
-	-fno-sanitize-recover=undefined $(STD) -Ilib $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
+	-fno-sanitize-recover=undefined $(STD) $(LIB_DIRS:%=-I%) $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
 FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c lib/io_txt_head.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/io_decode.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
@@ -241,13 +244,12 @@ build/fuzz/fuzz_rows: tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) lib/table_read.h
 	$(FUZZ_CC) $(FUZZ_CFLAGS) -o $@ tests/fuzz/fuzz_rows.c $(FUZZ_ROWS_SRC) -lm
 
 # make MPI=1: also the MPI builds of surfgen and gfmd-solve (lib/mpi/,
-# tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin
-# libopenmpi-dev libfftw3-mpi-dev) in build/mpi/bin/: the serial library
-# as it is plus lib/mpi/*.o, whose distributed elastic operator
-# (lib/mpi/delastic.c) implements the seam of lib/elastic.h through which
-# the serial solver sums over all ranks; no object is built twice.  make
-# check-mpi tests them against the serial tools with 1, 2 and 3 ranks
-# (tests/mpi/check.sh).
+# tools/mpi/; OpenMPI and FFTW-MPI: apt-get install openmpi-bin libopenmpi-dev
+# libfftw3-mpi-dev) in build/mpi/bin/: the serial library as it is plus
+# lib/mpi/*.o, whose distributed elastic operator (lib/mpi/delastic.c)
+# implements the seam of lib/elastic/elastic.h through which the serial solver
+# sums over all ranks; no object is built twice.  make check-mpi tests them
+# against the serial tools with 1, 2 and 3 ranks (tests/mpi/check.sh).
 MPICC ?= mpicc
 MPI_O = build/mpi
 MPI_BIN = build/mpi/bin

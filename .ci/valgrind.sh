@@ -58,7 +58,7 @@ report gfmd-fire $?
 vg gfmd-cg gfmd-solve -q -j 1 --method cg -p 0.1 -o "$tmp/cg.tsv" "$tmp/s.surf"
 report gfmd-cg $?
 # adhesion on free boundaries: the padded heights, load and displacement
-# control (lib/solver_fire_adh_free.c)
+# control (lib/solver/solver_fire_adh_free.c)
 vg gfmd-adh-free gfmd-solve -q -j 1 --boundary free --adhesion 0.001 \
     --range 0.01 --approach 0.02,0.01 --pressure "$tmp/p.surf" \
     -o "$tmp/adh.tsv" "$tmp/s.surf" 2>/dev/null

@@ -16,25 +16,25 @@
  * agree at that tolerance: tests/test_solver.c); cpu_iter_in_pairs, the
  * same ratio in process CPU time (the solve's over the pair's), which
  * other processes on the machine disturb far less than the wall time.
- * Two more method rows, cg-plastic and fire-plastic, solve with the
- * pressure capped at the hardness H = 4 p (gfmd-solve --hardness;
- * lib/solver_cg_plastic.c, and FIRE on pressures, lib/solver_fire_free.c,
- * on both boundary kinds): the cost of plasticity against the elastic
- * rows of the same map (their a_r error is against the elastic
- * reference, so it shows the effect).
- * Two more, fire-layer and cg-layer, solve the same map on a bonded
- * elastic layer of thickness L/8, nu = 0.3 (gfmd-solve --thickness;
- * lib/layer.h; free boundaries: the layer's pixel compliance,
- * lib/elastic_layer_free.h, its table made in the solver's setup, not
- * timed): the cost of a finite thickness against the half space's rows
- * (a_r error again against the half space).
+ * Two more method rows, cg-plastic and fire-plastic, solve with the pressure
+ * capped at the hardness H = 4 p (gfmd-solve --hardness;
+ * lib/solver/solver_cg_plastic.c, and FIRE on pressures,
+ * lib/solver/solver_fire_free.c, on both boundary kinds): the cost of
+ * plasticity against the elastic rows of the same map (their a_r error is
+ * against the elastic reference, so it shows the effect).
+ * Two more, fire-layer and cg-layer, solve the same map on a bonded elastic
+ * layer of thickness L/8, nu = 0.3 (gfmd-solve --thickness;
+ * lib/elastic/layer.h; free boundaries: the layer's pixel compliance,
+ * lib/elastic/elastic_layer_free.h, its table made in the solver's setup, not
+ * timed): the cost of a finite thickness against the half space's rows (a_r
+ * error again against the half space).
  * One more, fire-adh, adds the exponential adhesion of gfmd-solve
- * --adhesion (lib/adhesion.h) with range rho = dx and sigma_max =
+ * --adhesion (lib/solver/adhesion.h) with range rho = dx and sigma_max =
  * dgamma / rho = p (l_adh = 20 dx, resolved): the cost of adhesion
  * against the fire row (a_r error against the non-adhesive reference: the
  * effect); fire-dug the same with Dugdale's law (--law dugdale: sigma_max
  * up to the opening rho), a comparison per point instead of an exp.  On free boundaries it solves heights on the padded grid
- * (lib/solver_fire_adh_free.c), the fire row pressures: its fft_pairs
+ * (lib/solver/solver_fire_adh_free.c), the fire row pressures: its fft_pairs
  * are padded pairs, as the fire row's.
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
  * the blocked transforms (fft.h) and FIRE runs its passes block by block
@@ -42,10 +42,10 @@
  * map with FFTW's whole-grid pair and separate passes: the gain.
  *
  * Both boundary kinds side by side (column boundary): free boundaries
- * (lib/elastic_free.c) solve the same map as an isolated patch; their
+ * (lib/elastic/elastic_free.c) solve the same map as an isolated patch; their
  * fft_pairs count pairs of the padded 2n x 2n transform (FIRE's unpadded
- * pairs as a quarter each, lib/solver_fire_free.c), pair_seconds is then a
- * padded pair, and the reference is a free FIRE solve at 1e-10.  Free
+ * pairs as a quarter each, lib/solver/solver_fire_free.c), pair_seconds is
+ * then a padded pair, and the reference is a free FIRE solve at 1e-10.  Free
  * boundaries stop at 1024^2 (a padded 2048^2) unless BENCH_BIG=1.
  *
  * Then the contention rows: the 512^2 FIRE solve with the default thread

@@ -1,12 +1,12 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_elastic.c - lib/elastic.c and lib/elastic_free.c against closed
- * forms: a single Fourier mode q of the periodic half space has stiffness
- * k_q = |q| E* / 2 (K cos = k_q cos, G cos = cos/k_q), the elastic energy
- * is (1/2) sum k_q |u_q|^2 = (1/2) <u K u>, and the free-boundary
- * compliance of one loaded pixel is Love's closed form at its centre and
- * Boussinesq's point load d^2/(pi E* r) far from it.  The pixel kernel
- * (elastic.h) against the same Love compliance summed over the periodic
- * images in real space, and its limits and symmetries. */
+/* test_elastic.c - lib/elastic/elastic.c and lib/elastic/elastic_free.c
+ * against closed forms: a single Fourier mode q of the periodic half space
+ * has stiffness k_q = |q| E* / 2 (K cos = k_q cos, G cos = cos/k_q), the
+ * elastic energy is (1/2) sum k_q |u_q|^2 = (1/2) <u K u>, and the
+ * free-boundary compliance of one loaded pixel is Love's closed form at its
+ * centre and Boussinesq's point load d^2/(pi E* r) far from it.  The pixel
+ * kernel (elastic.h) against the same Love compliance summed over the
+ * periodic images in real space, and its limits and symmetries. */
 #include <math.h>
 #include <stdlib.h>
 

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* test_free.c - free boundaries (lib/elastic_free.c, the CG on them) and
- * displacement control (lib/solver_approach.c) against Hertz and
+/* test_free.c - free boundaries (lib/elastic/elastic_free.c, the CG on them)
+ * and displacement control (lib/solver/solver_approach.c) against Hertz and
  * Boussinesq without periodic images; the non-wrapping contact analysis.
  *
  * Units: E* = 1, cell 1 x 1 unless said.  Hertz: h = -r^2/(2R), R = 1,

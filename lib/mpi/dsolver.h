@@ -3,7 +3,7 @@
  *
  * rc_mpi_solver_new is rc_solver_new for a distributed indenter: height
  * holds this rank's rows (rc_mpi_rows) of an nx x ny grid.  The solve and
- * the accessors are the serial library's (lib/solver.c, solver_fire.c)
+ * the accessors are the serial library's (lib/solver/solver.c, solver_fire.c)
  * on the distributed operator of delastic.h, which completes their sums
  * over all ranks (fields are the local rows; elastic energy, mean gap
  * and approach are global).  FIRE only. */

@@ -114,7 +114,7 @@ else
 	skip 3 "no C compiler to build the checker's own circle"
 fi
 
-# The solver's layers, top down (lib/solver_impl.h): a file uses files
+# The solver's layers, top down (lib/solver/solver_impl.h): a file uses files
 # of lower layers only, and of its own layer unless that is the
 # minimisers' (a method does not call another).
 layer_of() {

@@ -100,7 +100,7 @@ check "gfmd-solve's bytes per point agree (README $readme_b, gfmd-solve(1) $man1
 # line near its top, every manual page has a LICENSE section, and the
 # text is in the tree.
 check "LICENSE is the GPL version 3" grep -q "GNU GENERAL PUBLIC LICENSE" "$RC_TOP/LICENSE"
-missing=$(cd "$RC_TOP" && for f in lib/*.[ch] lib/mpi/*.[ch] tools/*.[ch] tools/mpi/*.[ch] \
+missing=$(cd "$RC_TOP" && for f in lib/*.[ch] lib/*/*.[ch] tools/*.[ch] tools/mpi/*.[ch] \
     tests/*.[ch] tests/e2e/*.sh bench/*.c bench/*.sh Makefile studies/*/Makefile; do
 	[ -f "$f" ] || continue
 	head -n 3 "$f" | grep -q 'SPDX-License-Identifier: GPL-3.0-or-later' || echo "$f"

@@ -137,7 +137,7 @@ done
 # at 128^2 (make check-hard) CG two-cycled forever at w = -20 (thousands
 # of points re-entering and clipped each step) and at w = 20 its cheap
 # residual bound never fell below tol though the residual had; both
-# fixed in lib/solver_cg.c.
+# fixed in lib/solver/solver_cg.c.
 surfgen -n $(n 64) --seed 2 -o "$T/w0.surf"
 for w in -20 -8 8 20; do
 	surfwarp -w $w "$T/w0.surf" -o "$T/w$w.surf"
@@ -249,7 +249,7 @@ done
 # also the diagonal point, full contact from p = pi sqrt2/4 (K h at the
 # two side points), and with one point in contact
 # mean gap = 3/4 - p (2/pi + 1/(pi sqrt2)).
-# Taught: CG stalled here (see lib/solver_cg.c, the re-entry step with
+# Taught: CG stalled here (see lib/solver/solver_cg.c, the re-entry step with
 # tau = 0 when the gap on a one-point contact set is already zero).
 printf '0 0\n0 1\n' > "$T/two.txt"
 check_status "2x2: -p is an error (gbar 0)" 1 gfmd-solve -q -p 0.1 "$T/two.txt"

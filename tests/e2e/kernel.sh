@@ -3,7 +3,7 @@
 # kernel.sh - gfmd-solve --kernel end to end: the default row says
 # continuum and is unchanged by --kernel continuum; a sine in full
 # contact carries p + k_q A cos with the pixel kernel's k_q (1/G_q of
-# lib/elastic.h, summed here by awk over 201^2 images, independent of the
+# lib/elastic/elastic.h, summed here by awk over 201^2 images, independent of the
 # library's truncation) with both methods; free boundaries write pixel;
 # the refusals; a_subpixel; contact-stats groups by kernel.
 . "$RC_TOP/tests/e2e/lib.sh"

@@ -1,7 +1,7 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-3.0-or-later
 # layer.sh - gfmd-solve --thickness end to end: a sine in full contact on
-# a layer carries p + k_q A cos (lib/layer.h's k_q, computed here by awk
+# a layer carries p + k_q A cos (lib/elastic/layer.h's k_q, computed here by awk
 # from the closed form) with both methods, the approach adds p/k_0, a
 # very thick layer is the half space, displacement control past full
 # contact, the rows, the refusals, free boundaries (FIRE = CG, thick =
@@ -76,7 +76,8 @@ gfmd-solve -q -j 1 --thickness 0.1 --poisson 0.3 --boundary free --kernel pixel 
 check "--thickness --kernel pixel --boundary free: accepted" test $? -eq 0
 check "--kernel pixel on a free layer: the same rows" test "$(cut -f 1-20 "$T/kf0.tsv")" = "$(cut -f 1-20 "$T/kf1.tsv")"
 
-# --- Free boundaries (the layer's pixel compliance, lib/elastic_layer_free.h).
+# --- Free boundaries (the layer's pixel compliance,
+# lib/elastic/elastic_layer_free.h).
 # A non-periodic map is solved with free boundaries, a layer included;
 # FIRE and CG agree on it; a layer 100 times thicker than the area is
 # the free half space (its pressures to ~1e-7: the contact set, and the

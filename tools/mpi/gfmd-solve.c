@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* gfmd-solve (MPI build) - gfmd-solve(1) on many ranks: the indenter is
  * read from a .surf file with MPI-IO, each rank solves its rows with the
- * library's FIRE-GFMD (lib/solver_fire.c on the distributed operator of
+ * library's FIRE-GFMD (lib/solver/solver_fire.c on the distributed operator of
  * lib/mpi/delastic.c: FFTW-MPI transforms, Allreduce'd sums), rank 0
  * writes the table (the serial tool's rows and steps, tools/gfmd_row.c),
  * and the fields go to .surf files with MPI-IO.  Options not listed in

@@ -9,7 +9,7 @@
  * Positions u and velocities v live in real space, so the wall and the
  * velocity projection are local and exact (u >= h bit for bit).  One
  * iteration:
- *  1. f = -(p + K u): one FFT pair (lib/elastic.c).
+ *  1. f = -(p + K u): one FFT pair (lib/elastic/elastic.c).
  *  2. The wall: at a point on it (u = h) where f pushes into it (f < 0)
  *     the wall takes the force up, f_eff = 0, and the point is in contact
  *     (set C); elsewhere f_eff = f.  The residual (solver_measure.c)
