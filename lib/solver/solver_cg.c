@@ -38,7 +38,7 @@
  * with a second FFT pair.  Near convergence the contact set is fixed and an
  * iteration costs one pair.
  *
- * Convergence (solver.c): the residual of the pair (u', sigma), u' = h on
+ * Convergence (solver_measure.c): the residual of (u', sigma), u' = h on
  * I_c and max(G sigma + c, h) off it.  Since p + K u' - sigma = K(u' - u)
  * and |K x| <= k_max |x| (Parseval), k_max rms(u' - u) / p bounds it from
  * above at no cost; when the bound falls below the tolerance, or at the
