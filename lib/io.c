@@ -267,6 +267,8 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		g = rc__sdf_read(in, o, err);
 	else if (starts(p, n, "GWYP", 4) || starts(p, n, "GWYO", 4))
 		whole = gwy_mem;
+	else if (rc__tmd_is(p, n))
+		whole = rc__tmd_read;
 	else if (starts(p, n, "PK\x03\x04", 4))
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||

@@ -1,0 +1,219 @@
+/* SPDX-License-Identifier: GPL-3.0-or-later */
+/* test_vendor.c - instrument formats of other vendors read by our own
+ * readers (lib/io_tmd.c, ...): the example files of SurfaceTopography in
+ * tests/data (tests/data/st_vendor.README) against that project's test
+ * values and statistics computed independently from the raw bytes, files
+ * built here in the documented layouts (value order, units, missing
+ * points), and every truncation of them refused with a message. */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io.h"
+#include "testlib.h"
+
+static const char *
+data_path(const char *name)
+{
+	static char path[4096];
+	const char *top = getenv("RC_TOP");
+
+	snprintf(path, sizeof(path), "%s/tests/data/%s", top ? top : ".", name);
+	return path;
+}
+
+static unsigned char *
+slurp(const char *path, size_t *len)
+{
+	FILE *fp = fopen(path, "rb");
+	unsigned char *b = NULL;
+	long n;
+
+	if (fp == NULL || fseek(fp, 0, SEEK_END) != 0 || (n = ftell(fp)) < 0 ||
+	    fseek(fp, 0, SEEK_SET) != 0 || (b = malloc((size_t)n + 1)) == NULL ||
+	    fread(b, 1, (size_t)n, fp) != (size_t)n) {
+		if (fp != NULL)
+			fclose(fp);
+		free(b);
+		return NULL;
+	}
+	fclose(fp);
+	*len = (size_t)n;
+	return b;
+}
+
+struct stats {
+	double mean, rms, min, max;
+	size_t nvalid;
+};
+
+static struct stats
+stats_of(const rc_grid *g)
+{
+	struct stats s = { 0, 0, INFINITY, -INFINITY, 0 };
+	size_t n = rc_grid_size(g);
+
+	for (size_t k = 0; k < n; k++)
+		if (!isnan(g->z[k])) {
+			s.mean += g->z[k];
+			s.nvalid++;
+			s.min = fmin(s.min, g->z[k]);
+			s.max = fmax(s.max, g->z[k]);
+		}
+	s.mean /= (double)s.nvalid;
+	for (size_t k = 0; k < n; k++)
+		if (!isnan(g->z[k]))
+			s.rms += (g->z[k] - s.mean) * (g->z[k] - s.mean);
+	s.rms = sqrt(s.rms / (double)s.nvalid);
+	return s;
+}
+
+/* Every prefix of the file (all of the first 300 bytes, then a spread up
+ * to one byte short) must be refused with a message, never read or
+ * crash. */
+static void
+truncations(const char *name, const unsigned char *b, size_t len)
+{
+	size_t cuts[400], nc = 0;
+	int refused = 0, said = 0;
+	rc_err err;
+
+	for (size_t k = 1; k < 300 && k < len; k++)
+		cuts[nc++] = k;
+	for (size_t k = 0; k < 90 && len > 300; k++)
+		cuts[nc++] = 300 + (len - 301) * k / 89;
+	for (size_t c = 0; c < nc; c++) {
+		rc_grid *g;
+
+		test_put_file(test_path("cut.bin"), b, cuts[c]);
+		g = rc_grid_read(test_path("cut.bin"), NULL, &err);
+		refused += g == NULL;
+		said += g == NULL && err.msg[0] != '\0';
+		rc_grid_free(g);
+	}
+	test_int(refused, (long long)nc, "%s: %zu truncations refused", name, nc);
+	test_int(said, (long long)nc, "%s: each with a message", name);
+}
+
+/* SurfaceTopography's tmd-1.tmd: 300 x 300, 18.9566 mm square (its test,
+ * rtol 1e-3), heights in mm with min >= 0 and max < 1 mm (its test); the
+ * mean, rms, min and max are numpy's of the float32 values of the file
+ * (bytes 80 on), converted to metres. */
+static void
+test_tmd_file(void)
+{
+	rc_channel_info *info = NULL;
+	size_t nch = 0, len = 0;
+	unsigned char *b;
+	struct stats s;
+	rc_err err;
+	rc_grid *g;
+
+	g = rc_grid_read(data_path("st_tmd-1.tmd"), NULL, &err);
+	test_true(g != NULL, "tmd-1.tmd read: %s", g ? "" : err.msg);
+	if (g == NULL)
+		return;
+	test_int((long long)g->nx, 300, "tmd-1: nx");
+	test_int((long long)g->ny, 300, "tmd-1: ny");
+	test_rel(g->lx, 18.9566e-3, 1e-3, "tmd-1: lx (SurfaceTopography)");
+	test_rel(g->ly, 18.9566e-3, 1e-3, "tmd-1: ly");
+	test_true(strcmp(g->unit, "m") == 0 && strcmp(g->z_unit, "m") == 0,
+	    "tmd-1: in metres ('%s', '%s')", g->unit, g->z_unit);
+	test_int(g->periodic, 0, "tmd-1: a measurement is not periodic");
+	s = stats_of(g);
+	test_int((long long)s.nvalid, 90000, "tmd-1: no missing point");
+	test_rel(s.rms, 0.07434134067352181e-3, 1e-12, "tmd-1: rms (numpy)");
+	test_rel(s.mean, 0.17287914127574167e-3, 1e-12, "tmd-1: mean (numpy)");
+	test_true(s.min == 0, "tmd-1: min 0 (numpy): %g", s.min);
+	test_rel(s.max, 0.3509870171546936e-3, 1e-15, "tmd-1: max (numpy)");
+	rc_grid_free(g);
+	test_true(rc_grid_list_channels(data_path("st_tmd-1.tmd"), NULL, &info,
+	    &nch, &err) == 0 && nch == 1 && strcmp(info[0].title, "Height") == 0,
+	    "tmd-1: one channel, Height");
+	free(info);
+	if ((b = slurp(data_path("st_tmd-1.tmd"), &len)) != NULL) {
+		truncations("tmd-1", b, len);
+		/* One byte more is as wrong as one less. */
+		b[len] = 0;
+		test_put_file(test_path("long.tmd"), b, len + 1);
+		g = rc_grid_read(test_path("long.tmd"), NULL, &err);
+		test_true(g == NULL && strstr(err.msg, "data after") != NULL,
+		    "tmd: trailing byte refused: %s", g ? "read" : err.msg);
+		rc_grid_free(g);
+	}
+	free(b);
+}
+
+static void
+put_le32(unsigned char *p, uint32_t v)
+{
+	for (int k = 0; k < 4; k++)
+		p[k] = (unsigned char)(v >> (8 * k));
+}
+
+static void
+put_f32(unsigned char *p, float f)
+{
+	uint32_t u;
+
+	memcpy(&u, &f, 4);
+	put_le32(p, u);
+}
+
+/* The layout of SurfaceTopography's synthetic test: 3 x 2, 1.5 x 1 mm,
+ * heights 0..5 (mm) row by row; a NaN is a missing point. */
+static void
+test_tmd_synthetic(void)
+{
+	unsigned char b[80 + 24];
+	rc_err err;
+	rc_grid *g;
+
+	memset(b, 0, sizeof(b));
+	memcpy(b, "Binary TrueMap Data File v2.0\r\n", 31);
+	memcpy(b + 32, "Synthetic test file 1\r\n", 23);
+	put_le32(b + 56, 3);
+	put_le32(b + 60, 2);
+	put_f32(b + 64, 1.5f);
+	put_f32(b + 68, 1.0f);
+	put_f32(b + 72, 0.5f);
+	put_f32(b + 76, 0.25f);
+	for (int k = 0; k < 6; k++)
+		put_f32(b + 80 + 4 * k, k == 4 ? NAN : (float)k);
+	test_put_file(test_path("s.tmd"), b, sizeof(b));
+	g = rc_grid_read(test_path("s.tmd"), NULL, &err);
+	test_true(g != NULL, "tmd synthetic: %s", g ? "" : err.msg);
+	if (g == NULL)
+		return;
+	test_true(g->nx == 3 && g->ny == 2, "tmd synthetic: 3 x 2");
+	test_rel(g->lx, 1.5e-3, 1e-15, "tmd synthetic: lx 1.5 mm");
+	test_rel(g->ly, 1.0e-3, 1e-15, "tmd synthetic: ly 1 mm");
+	test_true(g->z[1] == 1e-3 && g->z[3] == 3e-3 && g->z[5] == 5e-3,
+	    "tmd synthetic: z(i, j) = (3 j + i) mm, x fastest");
+	test_true(g->valid != NULL && !g->valid[4] && isnan(g->z[4]) &&
+	    g->valid[5], "tmd synthetic: NaN is a missing point");
+	rc_grid_free(g);
+	put_le32(b + 56, 0);
+	test_put_file(test_path("z.tmd"), b, sizeof(b));
+	g = rc_grid_read(test_path("z.tmd"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "corrupt header") != NULL,
+	    "tmd: nx 0 refused: %s", g ? "read" : err.msg);
+	rc_grid_free(g);
+	put_le32(b + 56, 0xffffffffu);
+	test_put_file(test_path("h.tmd"), b, sizeof(b));
+	g = rc_grid_read(test_path("h.tmd"), NULL, &err);
+	test_true(g == NULL && err.msg[0] != '\0', "tmd: nx 2^32-1 refused: %s",
+	    g ? "read" : err.msg);
+	rc_grid_free(g);
+}
+
+int
+main(void)
+{
+	setenv("RC_GWYDDION", "", 1);	/* these tests are of our readers */
+	test_tmd_file();
+	test_tmd_synthetic();
+	return test_summary();
+}
