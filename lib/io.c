@@ -269,6 +269,8 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		whole = gwy_mem;
 	else if (rc__tmd_is(p, n))
 		whole = rc__tmd_read;
+	else if (rc__opdx_is(p, n))
+		whole = rc__opdx_read;
 	else if (starts(p, n, "PK\x03\x04", 4))
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||

@@ -173,6 +173,9 @@ int rc__gwyddion_read(const char *name, const unsigned char *buf, size_t len,
 int rc__tmd_is(const unsigned char *p, size_t n);
 int rc__tmd_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err);
+int rc__opdx_is(const unsigned char *p, size_t n);
+int rc__opdx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
 int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);
 

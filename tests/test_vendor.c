@@ -71,7 +71,7 @@ stats_of(const rc_grid *g)
 }
 
 /* Every prefix of the file (all of the first 300 bytes, then a spread up
- * to one byte short) must be refused with a message, never read or
+ * to one byte short of len) must be refused with a message, never read or
  * crash. */
 static void
 truncations(const char *name, const unsigned char *b, size_t len)
@@ -209,11 +209,77 @@ test_tmd_synthetic(void)
 	rc_grid_free(g);
 }
 
+/* SurfaceTopography's opdx-3.opdx (a Dektak profile, 3001 points) and
+ * opdx-3.txt, the instrument software's text export of the same profile
+ * (x and height in metres, 8 digits): a second, independent source of
+ * every height and of the spacing.  Heights agree to the export's
+ * rounding (half a unit of the 8th digit: relative 5e-8, 1e-7 allowed). */
+static void
+test_opdx_file(void)
+{
+	rc_channel_info *info = NULL;
+	size_t nch = 0, len = 0, n = 0, far = 0;
+	double x[3001], z[3001], worst = 0;
+	unsigned char *b;
+	FILE *fp;
+	rc_err err;
+	rc_grid *g;
+
+	if ((fp = fopen(data_path("st_opdx-3.txt"), "r")) != NULL) {
+		while (n < 3001 && fscanf(fp, "%lf %lf", &x[n], &z[n]) == 2)
+			n++;
+		fclose(fp);
+	}
+	test_int((long long)n, 3001, "opdx-3.txt: 3001 rows of the export");
+	g = rc_grid_read(data_path("st_opdx-3.opdx"), NULL, &err);
+	test_true(g != NULL, "opdx-3.opdx read: %s", g ? "" : err.msg);
+	if (g == NULL || n != 3001)
+		goto out;
+	test_true(g->nx == 3001 && g->ny == 1, "opdx-3: a profile of 3001");
+	test_rel(g->lx / 3001, x[3000] / 3000, 1e-7, "opdx-3: spacing as the "
+	    "export's x");
+	test_rel(g->lx, 3001 * 49.966688862798314e-6 / 3000, 1e-15,
+	    "opdx-3: lx = Extent n / (n - 1)");
+	test_true(strcmp(g->unit, "m") == 0 && strcmp(g->z_unit, "m") == 0,
+	    "opdx-3: in metres");
+	for (size_t k = 0; k < 3001; k++) {
+		double r = fabs(g->z[k] - z[k]) / fabs(z[k]);
+
+		worst = fmax(worst, r);
+		far += !(r <= 1e-7);
+	}
+	test_int((long long)far, 0, "opdx-3: every height as the export's "
+	    "(worst relative %.2g)", worst);
+	{
+		struct stats a = stats_of(g);
+		rc_grid *t = rc_grid_new(3001, 1, g->lx, g->ly, &err);
+
+		memcpy(t->z, z, sizeof(z));
+		struct stats e = stats_of(t);
+
+		test_rel(a.rms, e.rms, 1e-7, "opdx-3: rms %.9g as the export's", a.rms);
+		test_rel(a.min, e.min, 1e-7, "opdx-3: min as the export's");
+		test_rel(a.max, e.max, 1e-7, "opdx-3: max as the export's");
+		rc_grid_free(t);
+	}
+	test_true(rc_grid_list_channels(data_path("st_opdx-3.opdx"), NULL, &info,
+	    &nch, &err) == 0 && nch == 1 && strcmp(info[0].title, "Raw") == 0,
+	    "opdx-3: one channel, Raw");
+	free(info);
+	if ((b = slurp(data_path("st_opdx-3.opdx"), &len)) != NULL)
+		/* The 2 bytes after the last terminator hold nothing read. */
+		truncations("opdx-3", b, len - 2);
+	free(b);
+out:
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
 	setenv("RC_GWYDDION", "", 1);	/* these tests are of our readers */
 	test_tmd_file();
 	test_tmd_synthetic();
+	test_opdx_file();
 	return test_summary();
 }
