@@ -107,6 +107,12 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 
 	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
+	if (rc__nms_is(buf, len)) {	/* no magic: known by its length */
+		int r = rc__nms_read(buf, len, o, s, err);
+
+		free(buf);
+		return r;
+	}
 	if (rc__gwyddion_read(path, buf, len, s, &gerr) == 0) {
 		free(buf);
 		return 0;

@@ -176,6 +176,9 @@ int rc__tmd_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 int rc__opdx_is(const unsigned char *p, size_t n);
 int rc__opdx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err);
+int rc__nms_is(const unsigned char *buf, size_t len);
+int rc__nms_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
 int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);
 

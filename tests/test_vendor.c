@@ -274,6 +274,89 @@ out:
 	rc_grid_free(g);
 }
 
+static void
+put_f64(unsigned char *p, double d)
+{
+	uint64_t u;
+
+	memcpy(&u, &d, 8);
+	for (int k = 0; k < 8; k++)
+		p[k] = (unsigned char)(u >> (8 * k));
+}
+
+/* An .nms in the layout of the example files (lib/io_nms.c): 3 x 2
+ * heights 0, 65535, 32768, ... between zmin 2 and zmax 6 um, spacing
+ * 312.5 nm, and an intensity image; every truncation refused. */
+static void
+test_nms_synthetic(void)
+{
+	static const uint16_t raw[6] = { 0, 65535, 32768, 1, 65534, 13107 };
+	unsigned char b[3468 + 18];
+	rc_channel_info *info = NULL;
+	rc_read_opts o;
+	size_t nch = 0;
+	rc_err err;
+	rc_grid *g;
+
+	memset(b, 0, sizeof(b));
+	memcpy(b + 32, "OM_MS_2.0", 9);
+	put_f64(b + 16, 2.0);
+	put_f64(b + 24, 6.0);
+	put_le32(b + 1352, 3468);
+	put_le32(b + 1368, 3);
+	put_le32(b + 1372, 2);
+	put_f64(b + 1376, 312.5);
+	put_f64(b + 1384, 250.0);
+	for (int k = 0; k < 6; k++) {
+		b[3468 + 2 * k] = (unsigned char)(raw[k] & 255);
+		b[3469 + 2 * k] = (unsigned char)(raw[k] >> 8);
+		b[3480 + k] = (unsigned char)(10 * k);
+	}
+	test_put_file(test_path("s.nms"), b, sizeof(b));
+	g = rc_grid_read(test_path("s.nms"), NULL, &err);
+	test_true(g != NULL, "nms synthetic: %s", g ? "" : err.msg);
+	if (g != NULL) {
+		test_true(g->nx == 3 && g->ny == 2, "nms synthetic: 3 x 2");
+		test_rel(g->lx, 3 * 312.5e-9, 1e-15, "nms: lx = nx dx (nm)");
+		test_rel(g->ly, 2 * 250e-9, 1e-15, "nms: ly = ny dy (nm)");
+		test_rel(g->z[0], 2e-6, 1e-15, "nms: 0 is zmin");
+		test_rel(g->z[1], 6e-6, 1e-15, "nms: 65535 is zmax");
+		test_rel(g->z[2], (2 + 4 * 32768.0 / 65535) * 1e-6, 1e-15,
+		    "nms: z = zmin + v (zmax - zmin) / 65535 (um)");
+		test_rel(g->z[5], 2.8e-6, 1e-15, "nms: 13107 is a fifth of the "
+		    "range, x fastest");
+		test_true(g->valid == NULL && g->periodic == 0 &&
+		    strcmp(g->z_unit, "m") == 0, "nms: no missing point, a patch, m");
+	}
+	rc_grid_free(g);
+	test_true(rc_grid_list_channels(test_path("s.nms"), NULL, &info, &nch,
+	    &err) == 0 && nch == 2 && strcmp(info[0].title, "Height") == 0 &&
+	    strcmp(info[1].title, "Intensity") == 0 &&
+	    strcmp(info[1].z_unit, "1") == 0, "nms: channels Height and "
+	    "Intensity (unitless)");
+	free(info);
+	rc_read_opts_init(&o);
+	o.channel = 2;
+	o.z_unit = "1";
+	g = rc_grid_read(test_path("s.nms"), &o, &err);
+	test_true(g != NULL && g->z[5] == 50 && g->z[1] == 10,
+	    "nms: intensity channel, x fastest: %s", g ? "" : err.msg);
+	rc_grid_free(g);
+	/* Without the intensity image: the heights alone. */
+	test_put_file(test_path("h.nms"), b, 3468 + 12);
+	g = rc_grid_read(test_path("h.nms"), NULL, &err);
+	test_true(g != NULL && g->nx == 3 && g->z[1] == 6e-6,
+	    "nms: heights alone: %s", g ? "" : err.msg);
+	rc_grid_free(g);
+	truncations("nms synthetic", b, sizeof(b) - 6);
+	put_f64(b + 1376, -1);
+	test_put_file(test_path("n.nms"), b, sizeof(b));
+	g = rc_grid_read(test_path("n.nms"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "spacing") != NULL,
+	    "nms: negative spacing refused: %s", g ? "read" : err.msg);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -281,5 +364,6 @@ main(void)
 	test_tmd_file();
 	test_tmd_synthetic();
 	test_opdx_file();
+	test_nms_synthetic();
 	return test_summary();
 }
