@@ -104,9 +104,11 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	rc_in *in2 = NULL;
 	rc_grid *g = NULL;
 	FILE *fp = NULL;
+	int ole2;
 
 	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
+	ole2 = starts(buf, len, "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8);
 	if (rc__nms_is(buf, len)) {	/* no magic: known by its length */
 		int r = rc__nms_read(buf, len, o, s, err);
 
@@ -130,6 +132,12 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	free(buf);
 	if (g != NULL)
 		return rc__chanset_add(s, g, "", err);
+	if (ole2)	/* what is in it is unknown without parsing it */
+		return rc_seterr(err, "a Microsoft compound document (OLE2), as "
+		    "Digital Surf MountainsMap writes .mnt files: no reader of ours "
+		    "(Gwyddion's converter: %s); SurfaceTopography (Python) reads "
+		    ".mnt, or export the map from MountainsMap as .x3p or .sdf, "
+		    "which are read here", gerr.msg);
 	return rc_seterr(err, "not a format of ours; Gwyddion's converter: %s; "
 	    "read as text: %s", gerr.msg, terr.msg);
 }

@@ -357,6 +357,25 @@ test_nms_synthetic(void)
 	rc_grid_free(g);
 }
 
+/* A compound document (OLE2, as MountainsMap's .mnt) is not read: the
+ * message says what it is and what reads it. */
+static void
+test_ole2_refused(void)
+{
+	unsigned char b[1024];
+	rc_err err;
+	rc_grid *g;
+
+	memset(b, 0, sizeof(b));
+	memcpy(b, "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8);
+	test_put_file(test_path("a.mnt"), b, sizeof(b));
+	g = rc_grid_read(test_path("a.mnt"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "compound document") != NULL &&
+	    strstr(err.msg, "SurfaceTopography") != NULL,
+	    "ole2 refused, saying what reads it: %s", g ? "read" : err.msg);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -365,5 +384,6 @@ main(void)
 	test_tmd_synthetic();
 	test_opdx_file();
 	test_nms_synthetic();
+	test_ole2_refused();
 	return test_summary();
 }
