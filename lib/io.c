@@ -100,7 +100,7 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 {
 	unsigned char *buf = NULL;
 	size_t len = 0;
-	rc_err gerr, terr;
+	rc_err gerr, terr, merr;
 	rc_in *in2 = NULL;
 	rc_grid *g = NULL;
 	FILE *fp = NULL;
@@ -108,7 +108,12 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 
 	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
-	ole2 = starts(buf, len, "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8);
+	/* a compound document: MountainsMap's, else maybe Gwyddion's */
+	if ((ole2 = rc__mnt_is(buf, len)) && rc__mnt_read(buf, len, o, s,
+	    &merr) == 0) {
+		free(buf);
+		return 0;
+	}
 	if (rc__nms_is(buf, len)) {	/* no magic: known by its length */
 		int r = rc__nms_read(buf, len, o, s, err);
 
@@ -132,12 +137,9 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	free(buf);
 	if (g != NULL)
 		return rc__chanset_add(s, g, "", err);
-	if (ole2)	/* what is in it is unknown without parsing it */
-		return rc_seterr(err, "a Microsoft compound document (OLE2), as "
-		    "Digital Surf MountainsMap writes .mnt files: no reader of ours "
-		    "(Gwyddion's converter: %s); SurfaceTopography (Python) reads "
-		    ".mnt, or export the map from MountainsMap as .x3p or .sdf, "
-		    "which are read here", gerr.msg);
+	if (ole2)	/* our reader's word on it, not the text reader's */
+		return rc_seterr(err, "a Microsoft compound document (OLE2) not "
+		    "read: %s; Gwyddion's converter: %s", merr.msg, gerr.msg);
 	return rc_seterr(err, "not a format of ours; Gwyddion's converter: %s; "
 	    "read as text: %s", gerr.msg, terr.msg);
 }

@@ -435,6 +435,10 @@ channel(const struct parser *p, const struct entry *v, const char *prefix,
 	strcpy(g->unit, "m");
 	strcpy(g->z_unit, zunit);
 	g->periodic = 0;	/* a measurement */
+	if (rc__io_nan_missing(g, err) != 0) {
+		rc_grid_free(g);
+		return -1;
+	}
 	return rc__chanset_add(s, g, prefix + 9, err);	/* after /1D_Data/ */
 }
 

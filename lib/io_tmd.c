@@ -75,5 +75,9 @@ rc__tmd_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 	strcpy(g->unit, "m");
 	strcpy(g->z_unit, "m");
 	g->periodic = 0;	/* a measurement */
+	if (rc__io_nan_missing(g, err) != 0) {
+		rc_grid_free(g);
+		return -1;
+	}
 	return rc__chanset_add(s, g, "Height", err);
 }

@@ -11,6 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <zlib.h>
+
 #include "io.h"
 #include "testlib.h"
 
@@ -357,23 +359,324 @@ test_nms_synthetic(void)
 	rc_grid_free(g);
 }
 
-/* A compound document (OLE2, as MountainsMap's .mnt) is not read: the
- * message says what it is and what reads it. */
+/* ---- MountainsMap .mnt, built here: a compound document (CFB, 512-byte
+ * sectors) holding a ScopedContents stream in the layout lib/io_mnt.c
+ * describes. ---- */
+
+struct bytes {
+	unsigned char *p;
+	size_t n, cap;
+};
+
 static void
-test_ole2_refused(void)
+put(struct bytes *b, const void *p, size_t n)
 {
-	unsigned char b[1024];
+	if (b->n + n > b->cap) {
+		b->cap = 2 * (b->n + n) + 256;
+		b->p = realloc(b->p, b->cap);
+		if (b->p == NULL)
+			abort();
+	}
+	memcpy(b->p + b->n, p, n);
+	b->n += n;
+}
+
+static void
+put_le(struct bytes *b, uint64_t v, int n)
+{
+	unsigned char c[8];
+
+	for (int k = 0; k < n; k++)
+		c[k] = (unsigned char)(v >> (8 * k));
+	put(b, c, (size_t)n);
+}
+
+/* A TLV entry: tag and a size filled in by tlv_close. */
+static size_t
+tlv_open(struct bytes *b, unsigned tag)
+{
+	size_t at = b->n;
+
+	put_le(b, tag, 2);
+	put_le(b, 0, 8);
+	return at;
+}
+
+static void
+tlv_close(struct bytes *b, size_t at)
+{
+	uint64_t size = b->n - at - 10;
+
+	for (int k = 0; k < 8; k++)
+		b->p[at + 2 + k] = (unsigned char)(size >> (8 * k));
+}
+
+static void
+tlv_u32(struct bytes *b, unsigned tag, uint32_t v)
+{
+	size_t at = tlv_open(b, tag);
+
+	put_le(b, v, 4);
+	tlv_close(b, at);
+}
+
+static void
+tlv_f64(struct bytes *b, unsigned tag, double v)
+{
+	size_t at = tlv_open(b, tag);
+	uint64_t u;
+
+	memcpy(&u, &v, 8);
+	put_le(b, u, 8);
+	tlv_close(b, at);
+}
+
+/* Text: 0x04, then UTF-16LE of Latin-1 (0xb5 is the micro sign). */
+static void
+tlv_text(struct bytes *b, unsigned tag, const char *latin1)
+{
+	size_t at = tlv_open(b, tag);
+
+	put_le(b, 4, 1);
+	for (const char *c = latin1; *c; c++)
+		put_le(b, (unsigned char)*c, 2);
+	tlv_close(b, at);
+}
+
+static size_t
+tlv_class(struct bytes *b, uint32_t cls)
+{
+	size_t at = tlv_open(b, 1);
+
+	tlv_u32(b, 1, cls);
+	tlv_close(b, at);
+	return tlv_open(b, 2);	/* the body, closed by the caller */
+}
+
+/* An array object: count elements of esize bytes in two zlib blocks,
+ * stored second block first. */
+static void
+tlv_array(struct bytes *b, unsigned tag, uint32_t cls, const void *v,
+    uint32_t count, size_t esize)
+{
+	size_t at = tlv_open(b, tag), body = tlv_class(b, cls), data;
+	uint32_t half = count / 2;
+
+	tlv_u32(b, 1, count);
+	data = tlv_open(b, 2);
+	put_le(b, (uint64_t)count * esize, 8);
+	for (int blk = 1; blk >= 0; blk--) {
+		uint32_t off = blk ? half : 0, ne = blk ? count - half : half;
+		uLongf clen = compressBound(ne * esize);
+		unsigned char *z = malloc(clen);
+
+		compress(z, &clen, (const unsigned char *)v + off * esize,
+		    ne * esize);
+		put_le(b, off, 8);
+		put_le(b, ne, 4);
+		put_le(b, clen, 4);
+		put(b, z, clen);
+		free(z);
+	}
+	tlv_close(b, data);
+	tlv_close(b, body);
+	tlv_close(b, at);
+}
+
+/* An axis scale: step in unit, display unit, origin. */
+static void
+tlv_scale(struct bytes *b, double step, const char *unit, const char *dunit,
+    double origin)
+{
+	size_t at = tlv_open(b, 0xffff);
+
+	tlv_f64(b, 1, step);
+	tlv_text(b, 2, unit);
+	tlv_text(b, 3, dunit);
+	tlv_f64(b, 5, origin);
+	tlv_close(b, at);
+}
+
+static void
+tlv_axis(struct bytes *b, unsigned tag, uint32_t n, double step,
+    const char *unit)
+{
+	size_t at = tlv_open(b, tag), ax = tlv_open(b, 0xffff);
+
+	tlv_scale(b, step, unit, unit, 0);
+	tlv_u32(b, 1, n);
+	tlv_close(b, ax);
+	tlv_close(b, at);
+}
+
+/* 4 x 3 int32 counts 1000 k - 5000 of 0.0001 nm, origin 50 um, x step
+ * 2.5 um, y step 0.5 um, point (1, 2) not measured in the mask. */
+static void
+make_scoped(struct bytes *sc)
+{
+	int32_t counts[12];
+	unsigned char mask[6 * 5];
+	size_t main_, contents, doc, objs, obj, body, sub, subbody, meas, grid, h;
+
+	for (int k = 0; k < 12; k++)
+		counts[k] = 1000 * k - 5000;
+	memset(mask, 9, sizeof(mask));
+	mask[(2 + 1) * 6 + 1 + 1] = 22;
+	put_le(sc, 0, 8);	/* the stream's size, not read */
+	main_ = tlv_open(sc, 1);
+	tlv_text(sc, 0xcb, "DS-0");
+	contents = tlv_open(sc, 0x2bd);
+	tlv_u32(sc, 1, 1);
+	doc = tlv_open(sc, 2);
+	objs = tlv_open(sc, 1);
+	put_le(sc, 0, 8);	/* the prefix of each object */
+	obj = tlv_open(sc, 1);
+	body = tlv_class(sc, 9012);
+	h = tlv_open(sc, 0xffff);
+	tlv_text(sc, 4, "1 : synthetic");
+	tlv_close(sc, h);
+	sub = tlv_open(sc, 1);
+	subbody = tlv_class(sc, 9062);
+	meas = tlv_open(sc, 0xffff);
+	grid = tlv_open(sc, 0xffff);
+	h = tlv_open(sc, 0xffff);
+	{
+		size_t d = tlv_open(sc, 0xffff);
+
+		tlv_text(sc, 1, "synthetic");
+		tlv_close(sc, d);
+	}
+	tlv_close(sc, h);
+	tlv_axis(sc, 1, 4, 2.5, "\xb5m");
+	tlv_axis(sc, 2, 3, 0.0005, "mm");
+	{
+		size_t m = tlv_open(sc, 3), mb = tlv_class(sc, 9056);
+
+		tlv_u32(sc, 1, 4);
+		tlv_u32(sc, 2, 3);
+		tlv_array(sc, 5, 9048, mask, sizeof(mask), 1);
+		tlv_close(sc, mb);
+		tlv_close(sc, m);
+	}
+	tlv_close(sc, grid);
+	tlv_array(sc, 1, 9049, counts, 12, 4);
+	h = tlv_open(sc, 2);
+	tlv_scale(sc, 0.0001, "nm", "\xb5m", 50);
+	tlv_close(sc, h);
+	tlv_close(sc, meas);
+	tlv_close(sc, subbody);
+	tlv_close(sc, sub);
+	tlv_close(sc, body);
+	tlv_close(sc, obj);
+	tlv_close(sc, objs);
+	tlv_close(sc, doc);
+	tlv_close(sc, contents);
+	tlv_close(sc, main_);
+	/* Past the mini-stream cutoff (4096 bytes): a top-level entry of
+	 * padding. */
+	h = tlv_open(sc, 2);
+	for (int k = 0; k < 4096; k++)
+		put_le(sc, 0, 1);
+	tlv_close(sc, h);
+}
+
+/* The compound document: header, FAT (sector 0), directory (sector 1),
+ * the stream from sector 2. */
+static void
+make_cfb(struct bytes *f, const struct bytes *sc)
+{
+	size_t nsec = (sc->n + 511) / 512;
+	unsigned char hdr[512], fat[512], dir[512];
+
+	memset(hdr, 0, 512);
+	memcpy(hdr, "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8);
+	hdr[0x18] = 0x3e;
+	hdr[0x1a] = 3;
+	hdr[0x1c] = 0xfe;
+	hdr[0x1d] = 0xff;
+	hdr[0x1e] = 9;
+	hdr[0x20] = 6;
+	put_le32(hdr + 0x2c, 1);
+	put_le32(hdr + 0x30, 1);
+	put_le32(hdr + 0x38, 4096);
+	put_le32(hdr + 0x3c, 0xfffffffeu);
+	put_le32(hdr + 0x44, 0xfffffffeu);
+	memset(hdr + 0x4c, 0xff, 512 - 0x4c);
+	put_le32(hdr + 0x4c, 0);
+	memset(fat, 0xff, 512);
+	put_le32(fat, 0xfffffffdu);
+	put_le32(fat + 4, 0xfffffffeu);
+	for (size_t k = 0; k < nsec; k++)
+		put_le32(fat + 4 * (2 + k), k + 1 < nsec ? (uint32_t)(3 + k) :
+		    0xfffffffeu);
+	memset(dir, 0, 512);
+	for (int k = 0; k < 10; k++)
+		dir[2 * k] = (unsigned char)"Root Entry"[k];
+	dir[64] = 22;
+	dir[66] = 5;
+	put_le32(dir + 116, 0xfffffffeu);
+	for (int k = 0; k < 14; k++)
+		dir[128 + 2 * k] = (unsigned char)"ScopedContents"[k];
+	dir[128 + 64] = 30;
+	dir[128 + 66] = 2;
+	put_le32(dir + 128 + 116, 2);
+	put_le32(dir + 128 + 120, (uint32_t)sc->n);
+	put(f, hdr, 512);
+	put(f, fat, 512);
+	put(f, dir, 512);
+	put(f, sc->p, sc->n);
+	while (f->n % 512 != 0)
+		put_le(f, 0, 1);
+}
+
+static void
+test_mnt_synthetic(void)
+{
+	struct bytes sc = { NULL, 0, 0 }, f = { NULL, 0, 0 };
+	rc_channel_info *info = NULL;
+	size_t nch = 0;
+	int vals = 1;
 	rc_err err;
 	rc_grid *g;
 
-	memset(b, 0, sizeof(b));
-	memcpy(b, "\xd0\xcf\x11\xe0\xa1\xb1\x1a\xe1", 8);
-	test_put_file(test_path("a.mnt"), b, sizeof(b));
-	g = rc_grid_read(test_path("a.mnt"), NULL, &err);
-	test_true(g == NULL && strstr(err.msg, "compound document") != NULL &&
-	    strstr(err.msg, "SurfaceTopography") != NULL,
-	    "ole2 refused, saying what reads it: %s", g ? "read" : err.msg);
+	make_scoped(&sc);
+	make_cfb(&f, &sc);
+	test_put_file(test_path("s.mnt"), f.p, f.n);
+	g = rc_grid_read(test_path("s.mnt"), NULL, &err);
+	test_true(g != NULL, "mnt synthetic: %s", g ? "" : err.msg);
+	if (g != NULL) {
+		test_true(g->nx == 4 && g->ny == 3, "mnt: 4 x 3");
+		test_rel(g->lx, 4 * 2.5e-6, 1e-15, "mnt: lx = nx step (um)");
+		test_rel(g->ly, 3 * 0.5e-6, 1e-15, "mnt: ly = ny step (mm)");
+		for (int k = 0; k < 12; k++)
+			if (k != 9 && fabs(g->z[k] - ((1000.0 * k - 5000) * 1e-13 +
+			    50e-6)) > 1e-15 * 50e-6)
+				vals = 0;
+		test_true(vals, "mnt: z = count step (nm) + origin (um), x fastest, "
+		    "blocks in their offsets' order");
+		test_true(g->valid != NULL && !g->valid[9] && isnan(g->z[9]) &&
+		    g->valid[8] && g->valid[10], "mnt: the mask's 22 at (1, 2) is "
+		    "missing, its border is not the grid");
+		test_true(strcmp(g->unit, "m") == 0 && strcmp(g->z_unit, "m") == 0 &&
+		    g->periodic == 0, "mnt: metres, a patch");
+	}
 	rc_grid_free(g);
+	test_true(rc_grid_list_channels(test_path("s.mnt"), NULL, &info, &nch,
+	    &err) == 0 && nch == 1 && strcmp(info[0].title, "synthetic") == 0 &&
+	    info[0].has_mask, "mnt: one channel, titled by its name, with a "
+	    "mask");
+	free(info);
+	truncations("mnt synthetic", f.p, f.n);
+	/* A compound document that is no MountainsMap document. */
+	memcpy(f.p + 1024 + 128, "X", 1);	/* the stream's name in the directory */
+	test_put_file(test_path("x.mnt"), f.p, f.n);
+	g = rc_grid_read(test_path("x.mnt"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "compound document") != NULL &&
+	    strstr(err.msg, "ScopedContents") != NULL,
+	    "other OLE2 refused, saying why: %s", g ? "read" : err.msg);
+	rc_grid_free(g);
+	free(sc.p);
+	free(f.p);
 }
 
 int
@@ -384,6 +687,6 @@ main(void)
 	test_tmd_synthetic();
 	test_opdx_file();
 	test_nms_synthetic();
-	test_ole2_refused();
+	test_mnt_synthetic();
 	return test_summary();
 }
