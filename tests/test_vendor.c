@@ -679,6 +679,143 @@ test_mnt_synthetic(void)
 	free(f.p);
 }
 
+/* ---- Dektak .OPDx maps, built here in the layout of lib/io_opdx.c ---- */
+
+static void
+opdx_name(struct bytes *b, const char *s)
+{
+	put_le(b, strlen(s), 4);
+	put(b, s, strlen(s));
+}
+
+/* An item's name and type, then a 4-byte varlen to be filled in. */
+static size_t
+opdx_open(struct bytes *b, const char *name, int type)
+{
+	size_t at;
+
+	opdx_name(b, name);
+	put_le(b, (unsigned)type, 1);
+	put_le(b, 4, 1);
+	at = b->n;
+	put_le(b, 0, 4);
+	return at;
+}
+
+static void
+opdx_close(struct bytes *b, size_t at)
+{
+	uint32_t L = (uint32_t)(b->n - at - 4);
+
+	for (int k = 0; k < 4; k++)
+		b->p[at + k] = (unsigned char)(L >> (8 * k));
+}
+
+static void
+opdx_end(struct bytes *b)
+{
+	put_le(b, 0, 4);	/* the empty name */
+	put_le(b, 0x7f, 1);
+	put_le(b, 0xffff, 2);
+}
+
+static void
+opdx_quantity(struct bytes *b, const char *name, double v, const char *sym)
+{
+	size_t at = opdx_open(b, name, 0x13);
+	uint64_t u;
+
+	memcpy(&u, &v, 8);
+	put_le(b, u, 8);
+	opdx_name(b, "Unit");
+	opdx_name(b, sym);
+	opdx_close(b, at);
+}
+
+static void
+opdx_u64(struct bytes *b, const char *name, uint64_t v)
+{
+	opdx_name(b, name);
+	put_le(b, 0x0b, 1);
+	put_le(b, v, 8);
+}
+
+/* 3 x 2 float32 k (NaN at k = 4) times 0.5 nm; the extents 2 um and
+ * 1 um are first to last point.  rows, cols: the matrix's own size. */
+static void
+make_opdx_map(struct bytes *b, uint32_t rows, uint32_t cols)
+{
+	size_t d2, raw, m;
+
+	put(b, "VCA DATA\x01\x00\x00\x55", 12);
+	d2 = opdx_open(b, "2D_Data", 0x7d);
+	raw = opdx_open(b, "Raw", 0x47);
+	opdx_name(b, "Matrix");
+	put_le(b, 0x00, 1);
+	opdx_name(b, "Matrix<float>");
+	put_le(b, 0, 4);
+	opdx_name(b, "Heights");
+	put_le(b, 4, 1);
+	m = b->n;
+	put_le(b, 0, 4);
+	put_le(b, rows, 4);
+	put_le(b, cols, 4);
+	for (int k = 0; k < 6; k++) {
+		float f = k == 4 ? NAN : (float)k;
+		uint32_t u;
+
+		memcpy(&u, &f, 4);
+		put_le(b, u, 4);
+	}
+	opdx_close(b, m);
+	opdx_u64(b, "Dimension1Points", 2);
+	opdx_u64(b, "Dimension2Points", 3);
+	opdx_quantity(b, "Dimension1Extent", 1, "\xc2\xb5m");
+	opdx_quantity(b, "Dimension2Extent", 2, "\xc2\xb5m");
+	opdx_quantity(b, "DataScale", 0.5, "nm");
+	opdx_end(b);
+	opdx_close(b, raw);
+	opdx_end(b);
+	opdx_close(b, d2);
+	opdx_end(b);
+}
+
+static void
+test_opdx_map(void)
+{
+	struct bytes b = { NULL, 0, 0 };
+	int vals = 1;
+	rc_err err;
+	rc_grid *g;
+
+	make_opdx_map(&b, 2, 3);
+	test_put_file(test_path("m.opdx"), b.p, b.n);
+	g = rc_grid_read(test_path("m.opdx"), NULL, &err);
+	test_true(g != NULL, "opdx map: %s", g ? "" : err.msg);
+	if (g != NULL) {
+		test_true(g->nx == 3 && g->ny == 2, "opdx map: 3 x 2");
+		test_rel(g->lx, 3e-6, 1e-15, "opdx map: lx = extent n / (n - 1)");
+		test_rel(g->ly, 2e-6, 1e-15, "opdx map: ly = extent n / (n - 1)");
+		for (int k = 0; k < 6; k++)
+			if (k != 4 && fabs(g->z[k] - 0.5e-9 * k) > 1e-24)
+				vals = 0;
+		test_true(vals, "opdx map: z = value DataScale, x fastest");
+		test_true(g->valid != NULL && !g->valid[4] && isnan(g->z[4]),
+		    "opdx map: NaN is a missing point");
+	}
+	rc_grid_free(g);
+	truncations("opdx map", b.p, b.n - 2);
+	b.n = 0;
+	make_opdx_map(&b, 3, 2);
+	test_put_file(test_path("w.opdx"), b.p, b.n);
+	g = rc_grid_read(test_path("w.opdx"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "the header says") != NULL,
+	    "opdx map: a matrix of another shape refused: %s",
+	    g ? "read" : err.msg);
+	rc_grid_free(g);
+	free(b.p);
+}
+
 int
 main(void)
 {
@@ -688,5 +825,6 @@ main(void)
 	test_opdx_file();
 	test_nms_synthetic();
 	test_mnt_synthetic();
+	test_opdx_map();
 	return test_summary();
 }
