@@ -48,6 +48,9 @@ typedef struct rc_read_opts {
 				 * also when the file says they are not lengths */
 	int npy_xy;		/* npy arrays are (nx, ny), x the first index
 				 * (default (ny, nx): numpy's row-major image) */
+	int uniform;		/* x-z columns whose x is not uniformly spaced
+				 * are resampled linearly onto n points of a
+				 * uniform step (default: refused) */
 } rc_read_opts;
 
 /* The defaults: zeroes, except L = 1 x 1. */
