@@ -19,9 +19,10 @@
  * through the text reader as CSV, so the checks and rules of columns
  * (uniform spacing, --uniform) are those of text files.
  *
- * Memory: every part is read with io_zip.c's bound (XLSX_PART_MAX), and
- * the CSV a sheet makes may not outgrow its XML by much (a sparse sheet,
- * a cell at XFD1048576, would otherwise make gigabytes of empty fields).
+ * Memory: every part is read with io_zip.c's bound (XLSX_PART_MAX) and
+ * streamed (never a tree of the whole sheet), and the CSV a sheet makes
+ * is at most twice that bound and the shared strings (a sparse sheet, a
+ * cell at XFD1048576, would otherwise make gigabytes of empty fields).
  */
 #include "io_internal.h"
 #include "units.h"
@@ -31,6 +32,7 @@
 #include <string.h>
 #include <libxml/parser.h>
 #include <libxml/tree.h>
+#include <libxml/xmlreader.h>
 #include <zip.h>
 
 #define XLSX_PART_MAX ((uint64_t)64 << 20)
@@ -41,7 +43,7 @@
 struct book {
 	zip_t *za;
 	char **shared;		/* the shared strings */
-	size_t nshared;
+	size_t nshared, cap;
 };
 
 /* A growing string. */
@@ -89,10 +91,10 @@ first(const xmlNode *n, const char *name)
 	return NULL;
 }
 
-/* Part name of the workbook parsed, or NULL (err set); *size its bytes
- * if size is not NULL. */
+/* Part name of the workbook parsed (the small ones: the workbook and
+ * its relationships), or NULL (err set). */
 static xmlDoc *
-part_sized(struct book *b, const char *name, size_t *size, rc_err *err)
+part(struct book *b, const char *name, rc_err *err)
 {
 	unsigned char *buf;
 	size_t len;
@@ -106,8 +108,6 @@ part_sized(struct book *b, const char *name, size_t *size, rc_err *err)
 	    (int)len, name, NULL, XML_PARSE_NONET | XML_PARSE_NOERROR |
 	    XML_PARSE_NOWARNING);
 	free(buf);
-	if (size != NULL)
-		*size = len;
 	if (doc == NULL || xmlDocGetRootElement(doc) == NULL) {
 		xmlFreeDoc(doc);
 		rc_seterr(err, "xlsx: %s is not well-formed XML",
@@ -117,10 +117,50 @@ part_sized(struct book *b, const char *name, size_t *size, rc_err *err)
 	return doc;
 }
 
-static xmlDoc *
-part(struct book *b, const char *name, rc_err *err)
+/* Calls fn with each element called name of part part_name, its subtree
+ * expanded (valid during the call only): libxml2's streaming reader, so
+ * that a sheet of millions of cells never stands in memory as a tree
+ * (some 30 bytes of tree a byte of XML, measured). */
+typedef int (*elem_fn)(void *ctx, xmlNode *n, rc_err *err);
+static int
+stream_part(struct book *b, const char *part_name, const char *name,
+    elem_fn fn, void *ctx, rc_err *err)
 {
-	return part_sized(b, name, NULL, err);
+	unsigned char *buf;
+	size_t len;
+	xmlTextReaderPtr rd;
+	char q[64];
+	int ret, r = 0;
+
+	if (rc__zip_entry(b->za, "xlsx", part_name, 0, XLSX_PART_MAX, &buf, &len,
+	    err) != 0)
+		return -1;
+	rd = len > INT32_MAX ? NULL : xmlReaderForMemory((const char *)buf,
+	    (int)len, part_name, NULL, XML_PARSE_NONET | XML_PARSE_NOERROR |
+	    XML_PARSE_NOWARNING);
+	ret = rd ? xmlTextReaderRead(rd) : -1;
+	while (ret == 1 && r == 0) {
+		const xmlChar *ln = xmlTextReaderConstLocalName(rd);
+		xmlNode *n;
+
+		if (xmlTextReaderNodeType(rd) != XML_READER_TYPE_ELEMENT ||
+		    ln == NULL || strcmp((const char *)ln, name) != 0) {
+			ret = xmlTextReaderRead(rd);
+			continue;
+		}
+		if ((n = xmlTextReaderExpand(rd)) == NULL) {
+			ret = -1;
+			break;
+		}
+		r = fn(ctx, n, err);
+		ret = xmlTextReaderNext(rd);
+	}
+	if (r == 0 && ret != 0)
+		r = rc_seterr(err, "xlsx: %s is not well-formed XML",
+		    rc__io_quote(q, sizeof(q), part_name, strlen(part_name)));
+	xmlFreeTextReader(rd);
+	free(buf);
+	return r;
 }
 
 /* The text of every <t> under n but those of phonetic runs (rPh). */
@@ -143,35 +183,34 @@ text_of(const xmlNode *n, struct sbuf *out, rc_err *err)
 }
 
 static int
+shared_si(void *ctx, xmlNode *si, rc_err *err)
+{
+	struct book *b = ctx;
+	struct sbuf t = { .limit = XLSX_PART_MAX };
+
+	if (b->nshared == b->cap) {
+		size_t cap = b->cap ? 2 * b->cap : 64;
+		char **p = realloc(b->shared, cap * sizeof(*p));
+
+		if (p == NULL)
+			return rc_seterr(err, "out of memory");
+		b->shared = p;
+		b->cap = cap;
+	}
+	if (text_of(si, &t, err) != 0 || sb_add(&t, "", 0, err) != 0) {
+		free(t.p);
+		return -1;
+	}
+	b->shared[b->nshared++] = t.p;
+	return 0;
+}
+
+static int
 read_shared(struct book *b, rc_err *err)
 {
-	xmlDoc *doc;
-	size_t n = 0;
-
 	if (zip_name_locate(b->za, "xl/sharedStrings.xml", 0) < 0)
 		return 0;
-	if ((doc = part(b, "xl/sharedStrings.xml", err)) == NULL)
-		return -1;
-	for (xmlNode *c = xmlDocGetRootElement(doc)->children; c; c = c->next)
-		n += is_el(c, "si");
-	if ((b->shared = rc_calloc(n ? n : 1, sizeof(*b->shared), err)) == NULL)
-		goto fail;
-	for (xmlNode *c = xmlDocGetRootElement(doc)->children; c; c = c->next) {
-		struct sbuf s = { .limit = XLSX_PART_MAX };
-
-		if (!is_el(c, "si"))
-			continue;
-		if (text_of(c, &s, err) != 0 || sb_add(&s, "", 0, err) != 0) {
-			free(s.p);
-			goto fail;
-		}
-		b->shared[b->nshared++] = s.p;
-	}
-	xmlFreeDoc(doc);
-	return 0;
-fail:
-	xmlFreeDoc(doc);
-	return -1;
+	return stream_part(b, "xl/sharedStrings.xml", "si", shared_si, b, err);
 }
 
 /* "E12" into column 5 and row 12 (1-based); -1 if it is no reference. */
@@ -296,46 +335,54 @@ out:
 	return r;
 }
 
-/* The rows of a sheet. */
-static xmlNode *
-sheet_data(xmlDoc *doc)
+/* Column and row of cell c from its reference; -1 without one. */
+static int
+cell_at(const xmlNode *c, unsigned *col, unsigned long *row)
 {
-	return first(xmlDocGetRootElement(doc), "sheetData");
+	xmlChar *ref = xmlGetProp(c, (const xmlChar *)"r");
+	int r = ref ? cell_ref((const char *)ref, col, row) : -1;
+
+	xmlFree(ref);
+	return r;
 }
 
-/* The value of cell (col, row) of a sheet (malloc'ed), NULL if it has
- * none or on error (err set, *failed 1). */
-static char *
-find_cell(const struct book *b, xmlDoc *doc, unsigned col, unsigned long row,
-    int *failed, rc_err *err)
+/* Looking for one cell (find_cell). */
+struct find {
+	const struct book *b;
+	unsigned col;
+	unsigned long row;
+	char *value;		/* malloc'ed when found */
+};
+
+static int
+find_row(void *ctx, xmlNode *rw, rc_err *err)
 {
-	xmlNode *data = sheet_data(doc);
+	struct find *f = ctx;
+	unsigned col;
+	unsigned long row;
 
-	*failed = 0;
-	for (xmlNode *rw = data ? data->children : NULL; rw; rw = rw->next) {
-		if (!is_el(rw, "row"))
-			continue;
-		for (xmlNode *c = rw->children; c; c = c->next) {
-			xmlChar *ref;
-			unsigned cc;
-			unsigned long rr;
-			int ok;
+	for (xmlNode *c = rw->children; c && f->value == NULL; c = c->next)
+		if (is_el(c, "c") && cell_at(c, &col, &row) == 0 &&
+		    col == f->col && row == f->row &&
+		    (f->value = cell_value(f->b, c, err)) == NULL)
+			return -1;
+	return 0;
+}
 
-			if (!is_el(c, "c"))
-				continue;
-			ref = xmlGetProp(c, (const xmlChar *)"r");
-			ok = ref && cell_ref((const char *)ref, &cc, &rr) == 0 &&
-			    cc == col && rr == row;
-			xmlFree(ref);
-			if (ok) {
-				char *v = cell_value(b, c, err);
+/* The value of cell (col, row) of the sheet at path into *value
+ * (malloc'ed; NULL if the cell is absent). */
+static int
+find_cell(struct book *b, const char *path, unsigned col, unsigned long row,
+    char **value, rc_err *err)
+{
+	struct find f = { b, col, row, NULL };
 
-				*failed = v == NULL;
-				return v;
-			}
-		}
+	if (stream_part(b, path, "row", find_row, &f, err) != 0) {
+		free(f.value);
+		return -1;
 	}
-	return NULL;
+	*value = f.value;
+	return 0;
 }
 
 /* The length unit at the end of s ("0.08mm", "Ra  0.018  um"), after
@@ -364,142 +411,127 @@ trailing_unit(const char *s, int skip, char out[32])
 	return 0;
 }
 
-/* Mitutoyo's profile: DATA!E (x) and DATA!F (heights) as CSV. */
-static int
-mitutoyo_csv(struct book *b, xmlDoc *data, xmlDoc *cert, struct sbuf *csv,
-    rc_err *err)
-{
-	char xu[32], zu[32], line[160], q[64];
-	char *cut, *ra;
-	int failed, r = -1;
-	xmlNode *sd = sheet_data(data);
+/* A sheet made into CSV, row by row. */
+struct table {
+	const struct book *b;
+	struct sbuf *csv;
+};
 
-	if ((cut = find_cell(b, cert, 5, 48, &failed, err)) == NULL && failed)
-		return -1;
+/* Mitutoyo's row: DATA!E (x) and DATA!F (height), when either is there. */
+static int
+mitutoyo_row(void *ctx, xmlNode *rw, rc_err *err)
+{
+	struct table *t = ctx;
+	char *v[2] = { NULL, NULL }, line[160], q[64];
+	unsigned long row = 0;
+	unsigned col;
+	int r = -1;
+
+	for (xmlNode *c = rw->children; c; c = c->next) {
+		if (!is_el(c, "c") || cell_at(c, &col, &row) != 0 ||
+		    (col != 5 && col != 6))
+			continue;
+		free(v[col - 5]);
+		if ((v[col - 5] = cell_value(t->b, c, err)) == NULL)
+			goto out;
+		if (v[col - 5][0] == '\0') {
+			free(v[col - 5]);
+			v[col - 5] = NULL;
+		}
+	}
+	if (v[0] == NULL && v[1] == NULL)
+		return 0;
+	for (int k = 0; k < 2; k++) {
+		double d;
+
+		if (v[k] == NULL || rc__parse_double(v[k], &d) != 0) {
+			rc_seterr(err, "Mitutoyo workbook: DATA!%c%lu %s%s%s: want a "
+			    "number beside the %s", k ? 'F' : 'E', row, v[k] ? "'" :
+			    "is empty", v[k] ? rc__io_quote(q, sizeof(q), v[k],
+			    strlen(v[k])) : "", v[k] ? "'" : "", k ? "position" :
+			    "height");
+			goto out;
+		}
+	}
+	snprintf(line, sizeof(line), "%.64s,%.64s\n", v[0], v[1]);
+	r = sb_add(t->csv, line, strlen(line), err);
+out:
+	free(v[0]);
+	free(v[1]);
+	return r;
+}
+
+/* Mitutoyo's profile (the header comment says where its units are). */
+static int
+mitutoyo_csv(struct book *b, const char *data, const char *cert,
+    struct sbuf *csv, rc_err *err)
+{
+	struct table t = { b, csv };
+	char xu[32], zu[32], line[160], q[64];
+	char *cut = NULL, *ra = NULL;
+	int r = -1;
+
+	if (find_cell(b, cert, 5, 48, &cut, err) != 0 ||
+	    find_cell(b, data, 1, 1, &ra, err) != 0)
+		goto out;
 	if (cut == NULL || !trailing_unit(cut, 0, xu)) {
 		rc_seterr(err, "Mitutoyo workbook: Certificate!E48 '%s' is not "
 		    "the cut-off with its length unit (as '0.08mm'), which gives "
 		    "the unit of x", cut ? rc__io_quote(q, sizeof(q), cut,
 		    strlen(cut)) : "");
-		free(cut);
-		return -1;
+		goto out;
 	}
-	free(cut);
-	if ((ra = find_cell(b, data, 1, 1, &failed, err)) == NULL && failed)
-		return -1;
 	if (ra == NULL || !trailing_unit(ra, 1, zu)) {
 		rc_seterr(err, "Mitutoyo workbook: DATA!A1 '%s' is not a "
 		    "roughness parameter with its length unit (as 'Ra 0.018 "
 		    "\xc2\xb5m'), which gives the unit of the heights",
 		    ra ? rc__io_quote(q, sizeof(q), ra, strlen(ra)) : "");
-		free(ra);
-		return -1;
+		goto out;
 	}
-	free(ra);
 	snprintf(line, sizeof(line), "x in %s,z in %s\n", xu, zu);
 	if (sb_add(csv, line, strlen(line), err) != 0)
-		return -1;
-	for (xmlNode *rw = sd ? sd->children : NULL; rw; rw = rw->next) {
-		char *v[2] = { NULL, NULL };
-		unsigned long row = 0;
-
-		if (!is_el(rw, "row"))
-			continue;
-		for (xmlNode *c = rw->children; c; c = c->next) {
-			xmlChar *ref;
-			unsigned col;
-			int bad;
-
-			if (!is_el(c, "c"))
-				continue;
-			ref = xmlGetProp(c, (const xmlChar *)"r");
-			bad = ref == NULL || cell_ref((const char *)ref, &col, &row);
-			xmlFree(ref);
-			if (bad || (col != 5 && col != 6))
-				continue;
-			free(v[col - 5]);
-			if ((v[col - 5] = cell_value(b, c, err)) == NULL)
-				goto fail_row;
-			if (v[col - 5][0] == '\0') {
-				free(v[col - 5]);
-				v[col - 5] = NULL;
-			}
-		}
-		if (v[0] == NULL && v[1] == NULL)
-			continue;
-		for (int k = 0; k < 2; k++) {
-			double d;
-
-			if (v[k] == NULL || rc__parse_double(v[k], &d) != 0) {
-				rc_seterr(err, "Mitutoyo workbook: DATA!%c%lu %s%s%s: "
-				    "want a number beside the %s", k ? 'F' : 'E', row,
-				    v[k] ? "'" : "is empty", v[k] ? rc__io_quote(q,
-				    sizeof(q), v[k], strlen(v[k])) : "", v[k] ? "'" : "",
-				    k ? "position" : "height");
-				goto fail_row;
-			}
-		}
-		snprintf(line, sizeof(line), "%.64s,%.64s\n", v[0], v[1]);
-		r = sb_add(csv, line, strlen(line), err);
-		free(v[0]);
-		free(v[1]);
-		if (r != 0)
-			return -1;
-		continue;
-fail_row:
-		free(v[0]);
-		free(v[1]);
-		return -1;
-	}
-	return 0;
+		goto out;
+	r = stream_part(b, data, "row", mitutoyo_row, &t, err);
+out:
+	free(cut);
+	free(ra);
+	return r;
 }
 
-/* Any sheet as CSV: each row's cells from column A to its last, an
- * empty field where a cell has no value; commas in text become blanks. */
+/* Any sheet's row as CSV: its cells from column A to its last, an empty
+ * field where a cell has no value; commas in text become blanks. */
 static int
-table_csv(struct book *b, xmlDoc *doc, struct sbuf *csv, rc_err *err)
+table_row(void *ctx, xmlNode *rw, rc_err *err)
 {
-	xmlNode *sd = sheet_data(doc);
+	struct table *t = ctx;
+	unsigned at = 1;	/* the next column to write */
 
-	for (xmlNode *rw = sd ? sd->children : NULL; rw; rw = rw->next) {
-		unsigned at = 1;	/* the next column to write */
+	for (xmlNode *c = rw->children; c; c = c->next) {
+		unsigned col = at;
+		unsigned long row;
+		char *v;
 
-		if (!is_el(rw, "row"))
+		if (!is_el(c, "c"))
 			continue;
-		for (xmlNode *c = rw->children; c; c = c->next) {
-			xmlChar *ref;
-			unsigned col = at;
-			unsigned long row;
-			char *v;
-
-			if (!is_el(c, "c"))
-				continue;
-			if ((ref = xmlGetProp(c, (const xmlChar *)"r")) != NULL &&
-			    cell_ref((const char *)ref, &col, &row) != 0)
-				col = at;
-			xmlFree(ref);
-			if (col < at)
-				col = at;
-			for (; at < col; at++)
-				if (sb_add(csv, ",", at > 1, err) != 0)
-					return -1;
-			if ((v = cell_value(b, c, err)) == NULL)
+		if (cell_at(c, &col, &row) != 0 || col < at)
+			col = at;
+		for (; at < col; at++)
+			if (sb_add(t->csv, ",", at > 1, err) != 0)
 				return -1;
-			for (char *p = v; *p; p++)
-				if (*p == ',' || *p == '\n' || *p == '\r')
-					*p = ' ';
-			if ((at > 1 && sb_add(csv, ",", 1, err) != 0) ||
-			    sb_add(csv, v, strlen(v), err) != 0) {
-				free(v);
-				return -1;
-			}
-			free(v);
-			at = col + 1;
-		}
-		if (at > 1 && sb_add(csv, "\n", 1, err) != 0)
+		if ((v = cell_value(t->b, c, err)) == NULL)
 			return -1;
+		for (char *p = v; *p; p++)
+			if (*p == ',' || *p == '\n' || *p == '\r')
+				*p = ' ';
+		if ((at > 1 && sb_add(t->csv, ",", 1, err) != 0) ||
+		    sb_add(t->csv, v, strlen(v), err) != 0) {
+			free(v);
+			return -1;
+		}
+		free(v);
+		at = col + 1;
 	}
-	return 0;
+	return at > 1 ? sb_add(t->csv, "\n", 1, err) : 0;
 }
 
 int
@@ -508,10 +540,11 @@ rc__xlsx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 {
 	struct book b = { 0 };
 	struct sbuf csv = { 0 };
-	char path[512], title[128], other[128], inner[sizeof(err->msg)];
-	xmlDoc *sheet = NULL, *cert = NULL;
+	struct table t = { &b, &csv };
+	char path[512], cert[512], title[128], other[128];
+	char inner[sizeof(err->msg)];
 	rc_grid *g = NULL;
-	size_t xml_len = 0, shared_len = 0;
+	size_t shared_len = 0;
 	int mitutoyo, r = -1;
 
 	if ((b.za = rc__zip_open_mem(buf, len, "xlsx", err)) == NULL)
@@ -520,22 +553,20 @@ rc__xlsx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		goto out;
 	for (size_t k = 0; k < b.nshared; k++)
 		shared_len += strlen(b.shared[k]);
-	/* Mitutoyo's layout if both its sheets are there */
-	mitutoyo = sheet_part(&b, "Certificate", path, sizeof(path), other,
-	    sizeof(other), err) == 0 && (cert = part(&b, path, err)) != NULL &&
-	    sheet_part(&b, "DATA", path, sizeof(path), title, sizeof(title),
-	    err) == 0;
-	if (!mitutoyo && sheet_part(&b, NULL, path, sizeof(path), title,
-	    sizeof(title), err) != 0)
-		goto out;
-	if ((sheet = part_sized(&b, path, &xml_len, err)) == NULL)
-		goto out;
 	/* The table's text is shorter than the sheet's XML but for shared
 	 * strings used many times and empty fields between cells far apart:
-	 * four times the XML and the shared strings is ample. */
-	csv.limit = 4 * xml_len + 4 * shared_len + ((size_t)1 << 20);
-	if ((mitutoyo ? mitutoyo_csv(&b, sheet, cert, &csv, err) :
-	    table_csv(&b, sheet, &csv, err)) != 0)
+	 * twice the XML part's bound and the shared strings is ample. */
+	csv.limit = 2 * (size_t)XLSX_PART_MAX + 2 * shared_len;
+	/* Mitutoyo's layout if both its sheets are there */
+	mitutoyo = sheet_part(&b, "Certificate", cert, sizeof(cert), other,
+	    sizeof(other), err) == 0 && sheet_part(&b, "DATA", path,
+	    sizeof(path), title, sizeof(title), err) == 0;
+	if (mitutoyo) {
+		if (mitutoyo_csv(&b, path, cert, &csv, err) != 0)
+			goto out;
+	} else if (sheet_part(&b, NULL, path, sizeof(path), title, sizeof(title),
+	    err) != 0 || stream_part(&b, path, "row", table_row, &t,
+	    err) != 0)
 		goto out;
 	if ((g = rc__txt_read_mem(csv.p, csv.n, o, err)) == NULL) {
 		snprintf(inner, sizeof(inner), "%s", err->msg);
@@ -550,8 +581,6 @@ rc__xlsx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 out:
 	rc_grid_free(g);
 	free(csv.p);
-	xmlFreeDoc(sheet);
-	xmlFreeDoc(cert);
 	for (size_t k = 0; k < b.nshared; k++)
 		free(b.shared[k]);
 	free(b.shared);
