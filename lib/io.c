@@ -453,14 +453,21 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
     rc_channel_info **info, size_t *n, rc_err *err)
 {
 	rc_chanset s = { 0 };
+	rc_read_opts all;
 	FILE *fp;
 	int r;
 
 	*info = NULL;
 	*n = 0;
+	if (o != NULL)
+		all = *o;
+	else
+		rc_read_opts_init(&all);
+	all.channel = 0;	/* a listing reads every channel (a container */
+	all.channel_name = NULL;	/* reads only the chosen one otherwise) */
 	if ((fp = open_input(path, err)) == NULL)
 		return -1;
-	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, 0, err);
+	r = read_channels(fp, fp == stdin ? NULL : path, &all, &s, 0, err);
 	if (fp != stdin)
 		fclose(fp);
 	if (r == 0 && (*info = rc_calloc(s.n, sizeof(**info), err)) == NULL)

@@ -277,6 +277,21 @@ out:
 	return r;
 }
 
+/* Whether topography idx (from 0) is to be read: every one, unless the
+ * options name a channel (select_channel in io.c matches names the same
+ * way: exactly, else ignoring case). */
+static int
+chosen(const rc_read_opts *o, const struct topo *p, size_t idx)
+{
+	if (o == NULL)
+		return 1;
+	if (o->channel_name != NULL)
+		return strcasecmp(o->channel_name, p->name) == 0;
+	if (o->channel > 0)
+		return (size_t)o->channel == idx + 1;
+	return 1;
+}
+
 int
 rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, int depth, rc_err *err)
@@ -327,8 +342,15 @@ rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		for (size_t k = 0; item(&doc, topos, k) != NULL; k++) {
 			struct topo p;
 
-			if (describe(&doc, item(&doc, topos, k), ntopo, &p, err) != 0 ||
-			    read_topo(za, &p, o, &budget, s, err) != 0)
+			if (describe(&doc, item(&doc, topos, k), ntopo, &p, err) != 0)
+				goto out;
+			if (!chosen(o, &p, ntopo)) {
+				/* Only the channel asked for is read (one
+				 * member may need options another refuses);
+				 * the others keep their place and title. */
+				if (rc__chanset_add(s, NULL, p.name, err) != 0)
+					goto out;
+			} else if (read_topo(za, &p, o, &budget, s, err) != 0)
 				goto out;
 			ntopo++;
 		}

@@ -310,6 +310,33 @@ container(void)
 	    "a name the container lacks: refused");
 	rc_grid_free(g);
 	o.channel_name = NULL;
+	/* a chosen channel reads only its member: c without --uniform,
+	 * although b needs it; b itself still asks for it */
+	o.uniform = 0;
+	o.channel = 3;
+	g = rc_grid_read(path, &o, &err);
+	test_true(g && g->nx == 2 && g->z[3] == 1e-9 * 3,
+	    "channel 3 read without the option its neighbour needs (%s)",
+	    g ? "" : err.msg);
+	rc_grid_free(g);
+	o.channel = 0;
+	o.channel_name = "C";
+	g = rc_grid_read(path, &o, &err);
+	test_true(g && g->nx == 2, "channel 'C' (case aside) the same (%s)",
+	    g ? "" : err.msg);
+	rc_grid_free(g);
+	o.channel_name = NULL;
+	o.channel = 2;
+	g = rc_grid_read(path, &o, &err);
+	test_true(g == NULL && strstr(err.msg, "--uniform") != NULL,
+	    "channel 2 alone still names --uniform ('%s')", g ? "read" : err.msg);
+	rc_grid_free(g);
+	test_true(rc_grid_list_channels(path, &o, &info, &n, &err) != 0,
+	    "a listing reads every member, --channel or not");
+	free(info);
+	info = NULL;
+	o.channel = 0;
+	o.uniform = 1;
 	/* c's size in meta.yml disagreeing with the file's: refused */
 	snprintf(bad, sizeof(bad), "%s", meta);
 	p = strstr(bad, "- 1000.0\n    - 1000.0");
