@@ -39,6 +39,25 @@ for k in 1 2; do
 	    "$(col "$T/cg.tsv" n_c $k)" "$(col "$T/fire.tsv" n_c $k)" 0.005
 done
 
+# --- A larger measured map (tests/data/field_bcrf_192, its README): with
+# only the fixed largest step SIGMA_DT_MAX (solver_fire_free.c) p* = 0.01
+# took 159 iterations, points flip-flopping in and out of the active set;
+# with the step rules 90 (the bound: 120).  The same contact sets as CG
+# (measured: equal, 4282 and 14940 points).
+MAP2=$RC_TOP/tests/data/field_bcrf_192.surf
+gfmd-solve -q -j 1 -p 0.01,0.05 "$MAP2" > "$T/fire2.tsv"
+check "192^2 measured map, default solve: exit 0" test $? -eq 0
+check_range "192^2 measured map, p* = 0.01: at most 120 iterations" \
+    "$(col "$T/fire2.tsv" iterations 1)" 1 120
+check_range "192^2 measured map, p* = 0.05: at most 300 iterations" \
+    "$(col "$T/fire2.tsv" iterations 2)" 1 300
+gfmd-solve -q -j 1 -p 0.01,0.05 --method cg "$MAP2" > "$T/cg2.tsv"
+check "192^2 measured map, CG: exit 0" test $? -eq 0
+for k in 1 2; do
+	check_rel "192^2 measured map, pressure $k: n_c of FIRE and CG" \
+	    "$(col "$T/cg2.tsv" n_c $k)" "$(col "$T/fire2.tsv" n_c $k)" 0.005
+done
+
 # --- A stall: a tolerance below round-off (the residual floors near
 # 1e-12).  The solve ends after at most two windows of 300 iterations,
 # not at --max-iter, with exit 1 and the reason.
