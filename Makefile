@@ -229,6 +229,8 @@ FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c lib/io_txt_head.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/io_decode.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
+# other vendors' formats read here (lib/io_internal.h)
+FUZZ_READ_SRC += lib/io_tmd.c lib/io_opdx.c lib/io_nms.c lib/io_mnt.c
 FUZZ_ROWS_SRC = lib/table_read.c lib/rc_err.c
 .PHONY: fuzz
 fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)

@@ -100,13 +100,26 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 {
 	unsigned char *buf = NULL;
 	size_t len = 0;
-	rc_err gerr, terr;
+	rc_err gerr, terr, merr;
 	rc_in *in2 = NULL;
 	rc_grid *g = NULL;
 	FILE *fp = NULL;
+	int ole2;
 
 	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
+	/* a compound document: MountainsMap's, else maybe Gwyddion's */
+	if ((ole2 = rc__mnt_is(buf, len)) && rc__mnt_read(buf, len, o, s,
+	    &merr) == 0) {
+		free(buf);
+		return 0;
+	}
+	if (rc__nms_is(buf, len)) {	/* no magic: known by its length */
+		int r = rc__nms_read(buf, len, o, s, err);
+
+		free(buf);
+		return r;
+	}
 	if (rc__gwyddion_read(path, buf, len, s, &gerr) == 0) {
 		free(buf);
 		return 0;
@@ -124,6 +137,9 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	free(buf);
 	if (g != NULL)
 		return rc__chanset_add(s, g, "", err);
+	if (ole2)	/* our reader's word on it, not the text reader's */
+		return rc_seterr(err, "a Microsoft compound document (OLE2) not "
+		    "read: %s; Gwyddion's converter: %s", merr.msg, gerr.msg);
 	return rc_seterr(err, "not a format of ours; Gwyddion's converter: %s; "
 	    "read as text: %s", gerr.msg, terr.msg);
 }
@@ -267,6 +283,10 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		g = rc__sdf_read(in, o, err);
 	else if (starts(p, n, "GWYP", 4) || starts(p, n, "GWYO", 4))
 		whole = gwy_mem;
+	else if (rc__tmd_is(p, n))
+		whole = rc__tmd_read;
+	else if (rc__opdx_is(p, n))
+		whole = rc__opdx_read;
 	else if (starts(p, n, "PK\x03\x04", 4))
 		whole = x3p_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||

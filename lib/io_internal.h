@@ -166,6 +166,25 @@ rc_grid *rc__sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
  * whose data are in another file are refused (io_gwyddion.c). */
 int rc__gwyddion_read(const char *name, const unsigned char *buf, size_t len,
     rc_chanset *s, rc_err *err);
+/* The NaN values of g its missing points (g->valid), as a reader that
+ * lists channels must say before rc_grid_read_finish does. */
+int rc__io_nan_missing(rc_grid *g, rc_err *err);
+/* Instrument formats of other vendors read here, each from its bytes in
+ * memory: _is says whether the first n bytes (the whole file for NMS,
+ * which has no magic) are of the format; _read puts every channel into s
+ * (o unused; the signature of io.c's readers of whole files). */
+int rc__tmd_is(const unsigned char *p, size_t n);
+int rc__tmd_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__opdx_is(const unsigned char *p, size_t n);
+int rc__opdx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__nms_is(const unsigned char *buf, size_t len);
+int rc__nms_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__mnt_is(const unsigned char *p, size_t n);
+int rc__mnt_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
 int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
 int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);
 
