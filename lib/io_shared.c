@@ -566,6 +566,22 @@ copy_unit(char *dst, size_t cap, const char *u, const char *what, rc_err *err)
 }
 
 int
+rc__io_nan_missing(rc_grid *g, rc_err *err)
+{
+	size_t n = rc_grid_size(g), k;
+
+	for (k = 0; k < n && !isnan(g->z[k]); k++)
+		;
+	if (k == n)
+		return 0;
+	if (g->valid == NULL && (g->valid = rc_malloc(n, err)) == NULL)
+		return -1;
+	for (k = 0; k < n; k++)
+		g->valid[k] = !isnan(g->z[k]);
+	return 0;
+}
+
+int
 rc_grid_read_finish(rc_grid *g, const rc_read_opts *o, rc_err *err)
 {
 	if (check_values(g, o, err) != 0)

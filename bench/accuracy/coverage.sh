@@ -22,7 +22,7 @@
 # bar), and the smallest bar relative to its floor (never below 1).
 #
 #   sh coverage.sh   (environment: BIN, OUT, CAL_SEEDS, TEST_SEEDS, NICE)
-# Defaults: CAL_SEEDS 5001-5016 and 6001-6016, TEST_SEEDS 7001-7016 (the
+# Defaults: CAL_SEEDS 5001-5016 and 6001-6016, TEST_SEEDS 7001-7048 (the
 # first round, CAL_SEEDS 6001-6016 against TEST_SEEDS 5001-5016, is in
 # README.md).
 # Solutions are cached per seed and grid in $OUT/sol (a rerun solves
@@ -33,7 +33,7 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 BIN=${BIN:-$HERE/../../bin}
 OUT=${OUT:-out-coverage}
 CAL_SEEDS=${CAL_SEEDS:-$(seq 5001 5016) $(seq 6001 6016)}
-TEST_SEEDS=${TEST_SEEDS:-$(seq 7001 7016)}
+TEST_SEEDS=${TEST_SEEDS:-$(seq 7001 7048)}
 NICE=${NICE:-5}
 P=0.1,0.05,0.025
 mkdir -p "$OUT/surf" "$OUT/sol"
