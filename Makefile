@@ -10,7 +10,7 @@
 PREFIX  ?= /usr/local
 VERSION  = $(shell sed -n 's/^\#define RC_VERSION "\(.*\)"/\1/p' tools/common.h)
 CC      ?= cc
-PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf zlib
+PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf zlib yaml-0.1
 OPTFLAGS ?= -O2 -g
 CFLAGS  ?= $(OPTFLAGS)
 WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
@@ -37,6 +37,7 @@ DEB_libzip = libzip-dev
 DEB_libxml-2.0 = libxml2-dev
 DEB_netcdf = libnetcdf-dev
 DEB_zlib = zlib1g-dev
+DEB_yaml-0.1 = libyaml-dev
 NODEP_GOALS = clean deps uninstall
 ifneq ($(filter-out $(NODEP_GOALS),$(or $(MAKECMDGOALS),all)),)
 HAVE_PKG_CONFIG := $(shell command -v $(PKG_CONFIG) >/dev/null 2>&1 && echo y)
@@ -231,7 +232,9 @@ FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 	-fno-sanitize-recover=undefined $(STD) $(LIB_DIRS:%=-I%) $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
 FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c lib/io_txt_head.c \
 	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
-	lib/io_gwyddion.c lib/io_decode.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
+	lib/io_gwyddion.c lib/io_decode.c lib/io_zip.c lib/io_xlsx.c lib/io_ce.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
+# other vendors' formats read here (lib/io_internal.h)
+FUZZ_READ_SRC += lib/io_tmd.c lib/io_opdx.c lib/io_nms.c lib/io_mnt.c
 FUZZ_ROWS_SRC = lib/table_read.c lib/rc_err.c
 .PHONY: fuzz
 fuzz: build/fuzz/fuzz_read build/fuzz/fuzz_rows $(TOOLS)

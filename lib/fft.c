@@ -501,12 +501,15 @@ rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 {
 	double *z = (double *)spec;
 	const double *k = mu->k;
+	/* Read once: the stores to z could alias *mu, so the compiler
+	 * would load these every mode. */
+	const double scale = mu->scale, at_zero = mu->at_zero;
 	size_t m;
 
 	if (!mu->inverse) {
 #pragma omp parallel for schedule(static)
 		for (m = 0; m < nm; m++) {
-			double c = k[m] * mu->scale;
+			double c = k[m] * scale;
 
 			z[2 * m] *= c;
 			z[2 * m + 1] *= c;
@@ -514,7 +517,7 @@ rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 	} else {
 #pragma omp parallel for schedule(static)
 		for (m = 0; m < nm; m++) {
-			double c = k[m] > 0 ? mu->scale / k[m] : mu->at_zero;
+			double c = k[m] > 0 ? scale / k[m] : at_zero;
 
 			z[2 * m] *= c;
 			z[2 * m + 1] *= c;

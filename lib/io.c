@@ -43,45 +43,58 @@ looks_binary(rc_in *in)
 }
 
 typedef int (*mem_reader)(const unsigned char *, size_t, const rc_read_opts *,
-    rc_chanset *, rc_err *);
+    rc_chanset *, int, rc_err *);
 
 static int
 gwy_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
-    rc_chanset *s, rc_err *err)
+    rc_chanset *s, int depth, rc_err *err)
 {
 	(void)o;
+	(void)depth;
 	return rc__gwy_read(b, n, s, err);
 }
 
-/* A zip that is not an x3p: an Excel workbook (its entry names are
- * stored uncompressed) gets a message saying what would read it. */
+/* The vendor readers of whole files take no nesting depth. */
 static int
-x3p_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
-    rc_chanset *s, rc_err *err)
+tmd_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
 {
-	static const char sheet[] = "xl/workbook.xml";
+	(void)depth;
+	return rc__tmd_read(b, n, o, s, err);
+}
 
-	(void)o;
+static int
+opdx_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
+{
+	(void)depth;
+	return rc__opdx_read(b, n, o, s, err);
+}
+
+/* A zip: an x3p, else an Excel workbook or a contact.engineering
+ * container (their part names are stored uncompressed). */
+static int
+zip_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
+{
 	if (rc__x3p_read(b, n, s, err) == 0)
 		return 0;
-	if (memmem(b, n, sheet, sizeof(sheet) - 1) == NULL)
-		return -1;
-	return rc_seterr(err, "an Excel workbook (.xlsx, as Mitutoyo's "
-	    "SurfTest exports profiles), not a format read here (no Debian C "
-	    "library reads .xlsx); convert the sheet of the profile to CSV "
-	    "(xlsx2csv, Debian package xlsx2csv, or LibreOffice) with a first "
-	    "line naming the x and height columns with their units, as in "
-	    "\"x in mm,z in um\"");
+	if (memmem(b, n, "xl/workbook.xml", 15) != NULL)
+		return rc__xlsx_read(b, n, o, s, err);
+	if (memmem(b, n, "meta.yml", 8) != NULL)
+		return rc__ce_read(b, n, o, s, depth, err);
+	return -1;
 }
 
 /* netCDF, classic or netCDF-4; an HDF5 file that is not in the
  * contact.engineering layout is said to be one, with what lists it. */
 static int
 nc_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
-    rc_chanset *s, rc_err *err)
+    rc_chanset *s, int depth, rc_err *err)
 {
 	char inner[sizeof(err->msg)];
 
+	(void)depth;
 	if (rc__nc_read(b, n, o, s, err) == 0)
 		return 0;
 	if (!starts(b, n, "\x89HDF\r\n\x1a\n", 8))
@@ -100,13 +113,26 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 {
 	unsigned char *buf = NULL;
 	size_t len = 0;
-	rc_err gerr, terr;
+	rc_err gerr, terr, merr;
 	rc_in *in2 = NULL;
 	rc_grid *g = NULL;
 	FILE *fp = NULL;
+	int ole2;
 
 	if (rc__in_slurp(in, &buf, &len, err) != 0)
 		return -1;
+	/* a compound document: MountainsMap's, else maybe Gwyddion's */
+	if ((ole2 = rc__mnt_is(buf, len)) && rc__mnt_read(buf, len, o, s,
+	    &merr) == 0) {
+		free(buf);
+		return 0;
+	}
+	if (rc__nms_is(buf, len)) {	/* no magic: known by its length */
+		int r = rc__nms_read(buf, len, o, s, err);
+
+		free(buf);
+		return r;
+	}
 	if (rc__gwyddion_read(path, buf, len, s, &gerr) == 0) {
 		free(buf);
 		return 0;
@@ -124,6 +150,9 @@ vendor(rc_in *in, const char *path, const rc_read_opts *o, rc_chanset *s,
 	free(buf);
 	if (g != NULL)
 		return rc__chanset_add(s, g, "", err);
+	if (ole2)	/* our reader's word on it, not the text reader's */
+		return rc_seterr(err, "a Microsoft compound document (OLE2) not "
+		    "read: %s; Gwyddion's converter: %s", merr.msg, gerr.msg);
 	return rc_seterr(err, "not a format of ours; Gwyddion's converter: %s; "
 	    "read as text: %s", gerr.msg, terr.msg);
 }
@@ -267,8 +296,12 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 		g = rc__sdf_read(in, o, err);
 	else if (starts(p, n, "GWYP", 4) || starts(p, n, "GWYO", 4))
 		whole = gwy_mem;
+	else if (rc__tmd_is(p, n))
+		whole = tmd_mem;
+	else if (rc__opdx_is(p, n))
+		whole = opdx_mem;
 	else if (starts(p, n, "PK\x03\x04", 4))
-		whole = x3p_mem;
+		whole = zip_mem;
 	else if (starts(p, n, "CDF\x01", 4) || starts(p, n, "CDF\x02", 4) ||
 	    starts(p, n, "CDF\x05", 4) || starts(p, n, "\x89HDF\r\n\x1a\n", 8))
 		whole = nc_mem;
@@ -285,7 +318,7 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 	}
 	if (whole != NULL) {
 		if (rc__in_slurp(in, &buf, &len, err) == 0)
-			r = whole(buf, len, o, s, err);
+			r = whole(buf, len, o, s, depth, err);
 		goto out;
 	}
 	if (g != NULL)
@@ -293,6 +326,22 @@ read_channels(FILE *fp, const char *path, const rc_read_opts *o,
 out:
 	free(buf);
 	free(in);
+	return r;
+}
+
+int
+rc__read_member(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err)
+{
+	FILE *fp;
+	int r;
+
+	if (n == 0)
+		return rc_seterr(err, "empty input");
+	if ((fp = fmemopen((void *)b, n, "rb")) == NULL)
+		return rc_seterr(err, "%s", strerror(errno));
+	r = read_channels(fp, NULL, o, s, depth, err);
+	fclose(fp);
 	return r;
 }
 
@@ -404,14 +453,21 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
     rc_channel_info **info, size_t *n, rc_err *err)
 {
 	rc_chanset s = { 0 };
+	rc_read_opts all;
 	FILE *fp;
 	int r;
 
 	*info = NULL;
 	*n = 0;
+	if (o != NULL)
+		all = *o;
+	else
+		rc_read_opts_init(&all);
+	all.channel = 0;	/* a listing reads every channel (a container */
+	all.channel_name = NULL;	/* reads only the chosen one otherwise) */
 	if ((fp = open_input(path, err)) == NULL)
 		return -1;
-	r = read_channels(fp, fp == stdin ? NULL : path, o, &s, 0, err);
+	r = read_channels(fp, fp == stdin ? NULL : path, &all, &s, 0, err);
 	if (fp != stdin)
 		fclose(fp);
 	if (r == 0 && (*info = rc_calloc(s.n, sizeof(**info), err)) == NULL)

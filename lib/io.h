@@ -4,8 +4,9 @@
  * Formats: native .surf (text header + float64 LE, see surf(5)), .npy
  * (numpy), .gsf (Gwyddion Simple Field), .txt (whitespace matrix), .x3p
  * (ISO 25178-72) and .nc (netCDF) read and written; .gwy (Gwyddion),
- * SDF (ISO 25178-71) and, through Gwyddion when it is installed, every
- * instrument format Gwyddion reads, read only.  The
+ * SDF (ISO 25178-71), Excel workbooks (.xlsx), contact.engineering
+ * containers (a zip with meta.yml) and, through Gwyddion when it is
+ * installed, every instrument format Gwyddion reads, read only.  The
  * output format follows the file name's extension (.surf when there is
  * none or the output is standard output); the input format is detected
  * from the content, so pipes work.  Readers reject anything inconsistent
@@ -48,6 +49,9 @@ typedef struct rc_read_opts {
 				 * also when the file says they are not lengths */
 	int npy_xy;		/* npy arrays are (nx, ny), x the first index
 				 * (default (ny, nx): numpy's row-major image) */
+	int uniform;		/* x-z columns whose x is not uniformly spaced
+				 * are resampled linearly onto n points of a
+				 * uniform step (default: refused) */
 } rc_read_opts;
 
 /* The defaults: zeroes, except L = 1 x 1. */

@@ -166,7 +166,54 @@ rc_grid *rc__sdf_read(rc_in *in, const rc_read_opts *o, rc_err *err);
  * whose data are in another file are refused (io_gwyddion.c). */
 int rc__gwyddion_read(const char *name, const unsigned char *buf, size_t len,
     rc_chanset *s, rc_err *err);
+/* The NaN values of g its missing points (g->valid), as a reader that
+ * lists channels must say before rc_grid_read_finish does. */
+int rc__io_nan_missing(rc_grid *g, rc_err *err);
+/* Instrument formats of other vendors read here, each from its bytes in
+ * memory: _is says whether the first n bytes (the whole file for NMS,
+ * which has no magic) are of the format; _read puts every channel into s
+ * (o unused; the signature of io.c's readers of whole files). */
+int rc__tmd_is(const unsigned char *p, size_t n);
+int rc__tmd_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__opdx_is(const unsigned char *p, size_t n);
+int rc__opdx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__nms_is(const unsigned char *buf, size_t len);
+int rc__nms_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
+int rc__mnt_is(const unsigned char *p, size_t n);
+int rc__mnt_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, rc_err *err);
 int rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err);
+
+/* Zip containers held in memory (io_zip.c): open one (what names the
+ * format in messages; zip_discard closes it), and read entry name into a
+ * new buffer, exactly want bytes or (want 0) at most limit, never
+ * allocating much more than decompression really gives. */
+struct zip;
+struct zip *rc__zip_open_mem(const unsigned char *buf, size_t len,
+    const char *what, rc_err *err);
+int rc__zip_entry(struct zip *za, const char *what, const char *name,
+    uint64_t want, uint64_t limit, unsigned char **buf, size_t *len,
+    rc_err *err);
+/* An Excel workbook (io_xlsx.c): a Mitutoyo SurfTest export's profile,
+ * else the first sheet as a table of columns (io_txt.c's reading). */
+int rc__xlsx_read(const unsigned char *buf, size_t len,
+    const rc_read_opts *o, rc_chanset *s, rc_err *err);
+/* A contact.engineering container (io_ce.c): one channel per
+ * measurement meta.yml lists, each member read by rc__read_member. */
+int rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err);
+/* Every channel of the bytes b[0..n) (io.c), read as a file of unknown
+ * name at nesting depth (a member of a container is at depth 1: no
+ * container nests in it). */
+int rc__read_member(const unsigned char *b, size_t n, const rc_read_opts *o,
+    rc_chanset *s, int depth, rc_err *err);
+/* Text (io_txt.c) held in memory: the columns of a table a reader
+ * made, read as a text file. */
+rc_grid *rc__txt_read_mem(const char *text, size_t len,
+    const rc_read_opts *o, rc_err *err);
 int rc__nc_write(const rc_grid *g, FILE *fp, rc_err *err);
 
 #endif

@@ -15,7 +15,12 @@
  * value per line is a profile whose length -L gives.  Columns must lie on
  * a uniform grid (to 1% of the spacing, or to one unit of the last digit
  * when every coordinate is printed in fixed point); any other set of
- * points is refused, not resampled.  Periodic: our own files say (1 when
+ * points is refused, unless the options ask to resample x-z columns
+ * (rc_read_opts.uniform): then the n points, in strictly monotonic x,
+ * are interpolated linearly (GSL) onto n points of step
+ * (x_last - x_first) / (n - 1), a point on the grid keeping its height
+ * exactly, and a grid point whose interval touches a missing height is
+ * missing.  Periodic: our own files say (1 when
  * they do not), a plain matrix is periodic, exports and columns
  * (measurements) are not.
  */
@@ -23,9 +28,11 @@
 #include "units.h"
 
 #include <ctype.h>
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_interp.h>
 
 #define TOKEN_MAX 128
 
@@ -110,13 +117,77 @@ on_grid(double a, double a0, double d, size_t k, double ulp)
 	return fabs(a - (a0 + (double)k * d)) <= fmax(0.01 * fabs(d), tol);
 }
 
+/* n x-z points (v: x, z pairs) in strictly monotonic, not uniformly
+ * spaced x, interpolated linearly onto n points of a uniform step (the
+ * header comment says how). */
+static rc_grid *
+resample_profile(const double *v, size_t n, rc_err *err)
+{
+	double *x = NULL, *z = NULL, dx;
+	int down = v[2] < v[0];
+	gsl_interp *ip = NULL;
+	gsl_interp_accel *acc = NULL;
+	rc_grid *g = NULL;
+
+	if ((x = rc_malloc(n * sizeof(*x), err)) == NULL ||
+	    (z = rc_malloc(n * sizeof(*z), err)) == NULL)
+		goto out;
+	for (size_t k = 0; k < n; k++) {
+		size_t src = down ? n - 1 - k : k;
+
+		x[k] = v[2 * src];
+		z[k] = v[2 * src + 1];
+		if (!isfinite(x[k]) || (k > 0 && !(x[k] > x[k - 1]))) {
+			rc_seterr(err, "%zu x-z points: x is not strictly monotonic "
+			    "(line %zu of the data: x = %g): resampling needs the "
+			    "points in order of x, each x once", n, src + 1, x[k]);
+			goto out;
+		}
+	}
+	dx = (x[n - 1] - x[0]) / (double)(n - 1);
+	if ((ip = gsl_interp_alloc(gsl_interp_linear, n)) == NULL ||
+	    (acc = gsl_interp_accel_alloc()) == NULL) {
+		rc_seterr(err, "out of memory");
+		goto out;
+	}
+	gsl_interp_init(ip, x, z, n);	/* x checked increasing above */
+	if ((g = rc__io_grid_alloc(n, 1, (double)n * dx, dx, err)) == NULL)
+		goto out;
+	for (size_t i = 0; i < n; i++) {
+		double xg = i + 1 < n ? x[0] + (double)i * dx : x[n - 1];
+		size_t k = gsl_interp_bsearch(x, xg, 0, n - 1);
+
+		if (isfinite(z[k]) && isfinite(z[k + 1]))
+			gsl_interp_eval_e(ip, x, z, xg, acc, &g->z[i]);
+		else if (xg == x[k])
+			g->z[i] = z[k];
+		else if (xg == x[k + 1])
+			g->z[i] = z[k + 1];
+		else
+			g->z[i] = NAN;
+	}
+	g->periodic = 0;
+	if (rc_grid_meta_setf(g, "resampled", err, "linearly from %zu x "
+	    "positions not uniformly spaced", n) != 0) {
+		rc_grid_free(g);
+		g = NULL;
+	}
+out:
+	gsl_interp_accel_free(acc);
+	if (ip != NULL)
+		gsl_interp_free(ip);
+	free(x);
+	free(z);
+	return g;
+}
+
 /* x-z (ncol 2) or x-y-z (ncol 3) columns of n points on a uniform grid:
  * a profile of n x 1 points, or the map they cover.  Points are taken in
  * the order of the file, along x first or along y first; either axis may
  * run backwards. */
 static rc_grid *
 columns(const double *v, size_t ncol, size_t n, const double *ulp,
-    rc_err *err)
+    const rc_read_opts *o, rc_err *err)
 {
 	size_t nxg = n, nyg = 1, run, bad = n;
 	double x0 = v[0], y0 = 0, dx, dy, lx, ly;
@@ -156,18 +227,22 @@ columns(const double *v, size_t ncol, size_t n, const double *ulp,
 		    (ncol == 3 && !on_grid(v[k * ncol + 1], y0, dy, j, ulp[1])))
 			bad = k;
 	}
+	if (bad < n && ncol == 2 && o != NULL && o->uniform)
+		return resample_profile(v, n, err);
 	if (bad < n) {
 		if (ncol == 2)
 			rc_seterr(err, "%zu x-z points (2 values per line): x is not "
 			    "uniformly spaced (line %zu of the data: x = %g, a uniform "
-			    "step would give %g); resample the profile to a uniform "
-			    "step, or add a '# nx = 2' line to read a 2-column height "
-			    "matrix", n, bad + 1, v[bad * ncol], x0 + (double)bad * dx);
+			    "step would give %g); --uniform resamples the profile "
+			    "linearly onto %zu points of a uniform step, or add a "
+			    "'# nx = 2' line to read a 2-column height matrix", n,
+			    bad + 1, v[bad * ncol], x0 + (double)bad * dx, n);
 		else
 			rc_seterr(err, "%zu x-y-z points (3 values per line) do not "
 			    "form a uniform %zux%zu grid (line %zu of the data is off "
-			    "it); resample them to a grid, or add a '# nx = 3' line to "
-			    "read a 3-column height matrix", n, nxg, nyg, bad + 1);
+			    "it); resample them to a grid (--uniform resamples x-z "
+			    "profiles only), or add a '# nx = 3' line to read a "
+			    "3-column height matrix", n, nxg, nyg, bad + 1);
 		return NULL;
 	}
 	/* A line has the spacing of its one axis both ways. */
@@ -447,7 +522,7 @@ labelled_columns(const struct txt_header *h, const double *v, size_t ncol,
 			    "length unit", xu, yu);
 			goto out;
 		}
-		if ((g = columns(w, m, rows, ulpw, err)) == NULL)
+		if ((g = columns(w, m, rows, ulpw, o, err)) == NULL)
 			goto out;
 	}
 	strcpy(g->unit, xu);
@@ -576,5 +651,30 @@ fail:
 out:
 	rc__txt_header_free(&h);
 	free(v);
+	return g;
+}
+
+rc_grid *
+rc__txt_read_mem(const char *text, size_t len, const rc_read_opts *o,
+    rc_err *err)
+{
+	rc_grid *g = NULL;
+	rc_in *in;
+	FILE *fp;
+
+	if (len == 0) {
+		rc_seterr(err, "no values (an empty table)");
+		return NULL;
+	}
+	if ((fp = fmemopen((void *)text, len, "rb")) == NULL) {
+		rc_seterr(err, "%s", strerror(errno));
+		return NULL;
+	}
+	if ((in = rc_malloc(sizeof(*in), err)) != NULL) {
+		rc__in_init(in, fp);
+		g = rc__txt_read(in, o, err);
+		free(in);
+	}
+	fclose(fp);
 	return g;
 }

@@ -88,75 +88,13 @@ text_at(const xmlNode *n, const char *path, char *buf, size_t len)
 	return buf;
 }
 
-/* Read the entry name of za into a new buffer: exactly want bytes (or,
- * want 0, any size up to XML_MAX); the buffer grows with what the
- * decompression really gives, so a lying size costs nothing. */
+/* Entry name of za: exactly want bytes, or (want 0) any size up to
+ * XML_MAX (io_zip.c bounds the memory). */
 static int
 read_entry(zip_t *za, const char *name, zip_uint64_t want, unsigned char **buf,
     size_t *len, rc_err *err)
 {
-	zip_file_t *zf;
-	zip_stat_t st;
-	size_t cap, n = 0, limit = want ? want : XML_MAX;
-	unsigned char *b, *nb;
-	zip_int64_t r;
-	char q[64];
-
-	if ((zf = zip_fopen(za, name, 0)) == NULL)
-		return rc_seterr(err, "x3p: no entry '%s' in the container",
-		    rc__io_quote(q, sizeof(q), name, strlen(name)));
-	/* Deflate expands at most about 1032 times: a start that fits a
-	 * stored entry at once and costs little for a lying one. */
-	if (zip_stat(za, name, ZIP_STAT_COMP_SIZE, &st) == 0 &&
-	    (st.valid & ZIP_STAT_COMP_SIZE) && st.comp_size < limit / 1100)
-		cap = (size_t)st.comp_size * 1100 + 1;
-	else
-		cap = limit + 1;
-	if (cap < (1 << 16))
-		cap = 1 << 16;
-	if ((b = rc_malloc(cap, err)) == NULL) {
-		zip_fclose(zf);
-		return -1;
-	}
-	for (;;) {
-		if (n == cap) {
-			if ((nb = realloc(b, 2 * cap)) == NULL) {
-				rc_seterr(err, "out of memory");
-				goto fail;
-			}
-			b = nb;
-			cap *= 2;
-		}
-		r = zip_fread(zf, b + n, cap - n);
-		if (r < 0) {
-			rc_seterr(err, "x3p: %s: %s", rc__io_quote(q, sizeof(q), name,
-			    strlen(name)), zip_strerror(za));
-			goto fail;
-		}
-		if (r == 0)
-			break;
-		n += (size_t)r;
-		if (n > limit) {
-			rc_seterr(err, want ? "x3p: %s holds more than the %zu bytes "
-			    "main.xml describes" : "x3p: %s is over %zu bytes",
-			    rc__io_quote(q, sizeof(q), name, strlen(name)), limit);
-			goto fail;
-		}
-	}
-	zip_fclose(zf);
-	if (want && n != want) {
-		free(b);
-		return rc_seterr(err, "x3p: %s holds %zu bytes; main.xml describes "
-		    "%zu", rc__io_quote(q, sizeof(q), name, strlen(name)), n,
-		    (size_t)want);
-	}
-	*buf = b;
-	*len = n;
-	return 0;
-fail:
-	zip_fclose(zf);
-	free(b);
-	return -1;
+	return rc__zip_entry(za, "x3p", name, want, XML_MAX, buf, len, err);
 }
 
 static int
@@ -450,8 +388,6 @@ check_main_sum(zip_t *za, const xmlNode *root, const unsigned char *xml,
 int
 rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 {
-	zip_error_t ze;
-	zip_source_t *src;
 	zip_t *za;
 	unsigned char *xml = NULL;
 	size_t xlen;
@@ -461,31 +397,11 @@ rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 	rc_grid *g = NULL;
 	int r = -1;
 
-	zip_error_init(&ze);
-	if ((src = zip_source_buffer_create(buf, len, 0, &ze)) == NULL) {
-		rc_seterr(err, "x3p: %s", zip_error_strerror(&ze));
-		zip_error_fini(&ze);
+	if ((za = rc__zip_open_mem(buf, len, "x3p", err)) == NULL)
 		return -1;
-	}
-	if ((za = zip_open_from_source(src, ZIP_RDONLY | ZIP_CHECKCONS, &ze)) ==
-	    NULL) {
-		rc_seterr(err, "not a valid zip (x3p) container: %s",
-		    zip_error_strerror(&ze));
-		zip_source_free(src);
-		zip_error_fini(&ze);
-		return -1;
-	}
-	zip_error_fini(&ze);
-	/* A zip that is no x3p: contact.engineering's container of several
-	 * measurements (meta.yml) is told apart. */
 	if (zip_name_locate(za, "main.xml", 0) < 0) {
-		if (zip_name_locate(za, "meta.yml", 0) >= 0)
-			rc_seterr(err, "a zip with meta.yml and no main.xml: a "
-			    "contact.engineering container of several measurements, "
-			    "not an x3p; unzip it and read its measurements one by one");
-		else
-			rc_seterr(err, "a zip without main.xml: not an x3p file "
-			    "(ISO 25178-72)");
+		rc_seterr(err, "a zip without main.xml: not an x3p file "
+		    "(ISO 25178-72)");
 		goto out;
 	}
 	if (read_entry(za, "main.xml", 0, &xml, &xlen, err) != 0)

@@ -403,6 +403,69 @@ test_subpixel_hertz(void)
 	    "along y on an nx x 8 grid: the rows' estimate counts");
 }
 
+/* The bisection rc_contact_subpixel inverts the edge asymptotics with,
+ * as written before its test skipped most pows (contact.c, edge_above). */
+static double
+edge_fraction_pow(double r)
+{
+	double lo = 0, hi = 1;
+
+	for (int k = 0; k < 50; k++) {
+		double m = 0.5 * (lo + hi);
+
+		if (pow(1 - m, 1.5) > r * sqrt(m))
+			lo = m;
+		else
+			hi = m;
+	}
+	return 0.5 * (lo + hi);
+}
+
+/* rc_contact_subpixel bit for bit against that bisection: a line of 4
+ * points, h = 0, u = (g0, 0, g2, g3), point 1 in contact with pressure
+ * s, so its two bonds have gaps g2 and g0, |cos| = 1 and r = 3 g /
+ * (4 s dx); a_subpixel = (1 + (2 (e(r2) - 1/2 + e(r0) - 1/2)) / 2) / 4.
+ * 20000 random states with r over 1e-8 ... 1e8 (each bisection takes
+ * both of edge_above's ways: far from the root and near it), 20000 with
+ * r over 1e-200 ... 1e200 (r^2 underflows and overflows). */
+static void
+test_subpixel_bits(void)
+{
+	const double dx = 0.25;
+	unsigned long long x = 88172645463325252ULL;
+	size_t bad = 0;
+
+	for (int t = 0; t < 40000; t++) {
+		double decades = t < 20000 ? 4 : 100;
+		double u[4], h[4] = { 0, 0, 0, 0 }, sg[4] = { 0, 0, 0, 0 };
+		unsigned char c[4] = { 0, 1, 0, 0 };
+		double e[2], sum = 0, want, got;
+
+		for (int k = 0; k < 3; k++) {	/* xorshift: log10 uniform */
+			x ^= x << 13;
+			x ^= x >> 7;
+			x ^= x << 17;
+			e[k % 2] = pow(10, decades * (2 * (double)(x >> 11) /
+			    9007199254740992.0 - 1));
+			if (k == 2)
+				sg[1] = e[0];
+			else if (k == 0)
+				u[0] = e[0];
+			else
+				u[2] = e[1];
+		}
+		u[1] = 0;
+		u[3] = 0.5 * (u[0] + u[2]) + 1e-3;
+		sum += edge_fraction_pow(3 * u[2] / (4 * sg[1] * dx)) - 0.5;
+		sum += edge_fraction_pow(3 * u[0] / (4 * sg[1] * dx)) - 0.5;
+		want = (1.0 + (2.0 * sum) / 2.0) / 4.0;
+		got = rc_contact_subpixel(u, h, sg, c, 4, 1, 1.0, 1.0, 1.0);
+		bad += memcmp(&got, &want, sizeof(got)) != 0;
+	}
+	test_true(bad == 0, "a_subpixel bit for bit as with a pow at every "
+	    "bisection step: %zu of 40000 differ", bad);
+}
+
 int
 main(void)
 {
@@ -412,5 +475,6 @@ main(void)
 	test_cosine();
 	test_full_contact();
 	test_subpixel_hertz();
+	test_subpixel_bits();
 	return test_summary();
 }

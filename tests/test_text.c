@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <zip.h>
 #include <zlib.h>
 
 #include "io.h"
@@ -342,25 +341,120 @@ refusals(void)
 	    "columns with a line of names");
 }
 
-/* An Excel workbook (a zip with xl/workbook.xml) is refused saying what
- * would read it. */
-static void
-xlsx(void)
+/* The text s read with --uniform (o.uniform). */
+static rc_grid *
+read_uniform(const char *s, rc_err *err)
 {
-	static const char wb[] = "<workbook/>";
-	const char *path = test_path("book.xlsx");
-	rc_err err;
-	rc_grid *g;
-	int e;
-	zip_t *z = zip_open(path, ZIP_CREATE | ZIP_TRUNCATE, &e);
-	zip_source_t *src = zip_source_buffer(z, wb, sizeof(wb) - 1, 0);
+	rc_read_opts o;
 
-	zip_file_add(z, "xl/workbook.xml", src, ZIP_FL_OVERWRITE);
-	test_true(zip_close(z) == 0, "write the workbook");
-	g = rc_grid_read(path, NULL, &err);
-	test_true(g == NULL && strstr(err.msg, "Excel workbook") != NULL &&
-	    strstr(err.msg, "xlsx2csv") != NULL, "xlsx refused: '%s'",
-	    g == NULL ? err.msg : "read");
+	rc_read_opts_init(&o);
+	o.uniform = 1;
+	return read_mem(s, strlen(s), &o, err);
+}
+
+/* --uniform: x-z points not uniformly spaced are interpolated linearly
+ * onto as many points of a uniform step; checked against exact linear
+ * functions, the error bound of linear interpolation on a sine, points on
+ * the grid (kept exactly) and SurfaceTopography's xy files. */
+static void
+resample(void)
+{
+	static const double xs[] = { 0, 0.3, 1.1, 1.5, 2.9, 4 };
+	char buf[16384];
+	size_t n = 0, m = 0;
+	rc_read_opts o;
+	rc_err err;
+	rc_grid *g, *u;
+	double hmax = 0, worst = 0, prev = 0;
+
+	/* a uniform profile reads bit for bit the same with --uniform */
+	g = read_str(csv, &err);
+	u = read_uniform(csv, &err);
+	test_true(g && u && u->nx == g->nx && u->lx == g->lx &&
+	    memcmp(u->z, g->z, g->nx * sizeof(double)) == 0 &&
+	    rc_grid_meta_get(u, "resampled") == NULL,
+	    "--uniform leaves a uniform profile as it is");
+	rc_grid_free(g);
+	rc_grid_free(u);
+	/* z = 3 x + 1 at 6 uneven x: exact on the grid of step 0.8 */
+	for (size_t k = 0; k < 6; k++)
+		n += (size_t)snprintf(buf + n, sizeof(buf) - n, "%.17g %.17g\n",
+		    xs[k], 3 * xs[k] + 1);
+	refused("uneven x without --uniform", buf, "--uniform resamples");
+	g = read_uniform(buf, &err);
+	shape(g, "--uniform, 6 uneven points", 6, 1, 6 * 0.8, 0.8, "", "");
+	for (size_t i = 0; g != NULL && i < 6; i++)
+		test_abs(g->z[i], 3 * 0.8 * (double)i + 1, 1e-13,
+		    "linear heights resampled exactly, point %zu", i);
+	test_true(g && rc_grid_meta_get(g, "resampled") != NULL,
+	    "the grid says it was resampled");
+	rc_grid_free(g);
+	/* sin x on the uniform step 0.05 over [0, 10] with every third point
+	 * removed: resampled onto m points, within h^2/8 max|f''| = h^2/8 of
+	 * sin, h the widest gap (0.1) */
+	n = 0;
+	for (int k = 0; k <= 200; k++) {
+		double x = 0.05 * k;
+
+		if (k % 3 == 1 && k != 200)
+			continue;
+		if (m > 0 && x - prev > hmax)
+			hmax = x - prev;
+		prev = x;
+		m++;
+		n += (size_t)snprintf(buf + n, sizeof(buf) - n, "%.17g %.17g\n", x,
+		    sin(x));
+	}
+	g = read_uniform(buf, &err);
+	shape(g, "--uniform, sine with points removed", m, 1,
+	    (double)m * 10 / (double)(m - 1), 10 / (double)(m - 1), "", "");
+	for (size_t i = 0; g != NULL && i < m; i++)
+		worst = fmax(worst, fabs(g->z[i] - sin(10 * (double)i /
+		    (double)(m - 1))));
+	test_true(g && worst <= hmax * hmax / 8 + 1e-15 && worst > 0,
+	    "sine resampled within h^2/8 = %g of sin (largest error %g)",
+	    hmax * hmax / 8, worst);
+	rc_grid_free(g);
+	/* xy-3: a point at 4.5 among integers; 11 points of step 0.9 put a
+	 * grid point on it, which keeps its height; all others lie between
+	 * zeros */
+	rc_read_opts_init(&o);
+	o.uniform = 1;
+	g = rc_grid_read(test_data_path("st_xy-3.txt"), &o, &err);
+	shape(g, "xy-3 --uniform", 11, 1, 9.9, 0.9, "", "");
+	for (size_t i = 0; g != NULL && i < 11; i++)
+		test_abs(g->z[i], i == 5 ? 1 : 0, 1e-15, "xy-3 resampled: point %zu",
+		    i);
+	rc_grid_free(g);
+	/* xy-6: 0 1, 1 NaN, 2.5 1, 3 1 -> x 0 1 2 3: 1 on a grid point next to
+	 * a missing height is kept; the grid points touching the missing one
+	 * are missing */
+	g = rc_grid_read(test_data_path("st_xy-6.txt"), &o, &err);
+	shape(g, "xy-6 --uniform", 4, 1, 4, 1, "", "");
+	test_true(g && g->z[0] == 1 && g->z[3] == 1 && g->valid && g->valid[0] &&
+	    !g->valid[1] && !g->valid[2] && g->valid[3],
+	    "xy-6: 1, missing, missing, 1");
+	rc_grid_free(g);
+	/* xy-2: a "µm µm" line, a count, 24 points from 13.381669 to
+	 * 42.591941 um */
+	g = rc_grid_read(test_data_path("st_xy-2.txt"), &o, &err);
+	shape(g, "xy-2 --uniform", 24, 1, 24 * (4.2591941e+01 - 1.3381669e+01) /
+	    23, (4.2591941e+01 - 1.3381669e+01) / 23, "um", "um");
+	test_true(g && g->z[0] == 1.7854970e+01 && g->z[23] == 2.9477905e+01,
+	    "xy-2: the end points keep their heights");
+	rc_grid_free(g);
+	g = rc_grid_read(test_data_path("st_xy-2.txt"), NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "--uniform") != NULL,
+	    "xy-2 without --uniform: refused naming it ('%s')", g ? "" : err.msg);
+	rc_grid_free(g);
+	/* what cannot be resampled */
+	g = read_uniform("0 1\n2 1\n1 1\n3 1\n", &err);
+	test_true(g == NULL && strstr(err.msg, "not strictly monotonic") != NULL,
+	    "x out of order: refused ('%s')", g ? "" : err.msg);
+	rc_grid_free(g);
+	g = read_uniform("0 0 1\n1 0.3 2\n0 1 3\n1 1 4\n", &err);
+	test_true(g == NULL && strstr(err.msg, "x-z profiles only") != NULL,
+	    "x-y-z off a grid: refused ('%s')", g ? "" : err.msg);
 	rc_grid_free(g);
 }
 
@@ -376,6 +470,6 @@ main(void)
 	single_column();
 	gzip_input();
 	refusals();
-	xlsx();
+	resample();
 	return test_summary();
 }

@@ -185,3 +185,13 @@ test_summary(void)
 		printf("%d passed, %d failed\n", npassed, nfailed);
 	return nfailed ? 1 : 0;
 }
+
+const char *
+test_data_path(const char *name)
+{
+	static char path[1024];
+	const char *top = getenv("RC_TOP");
+
+	snprintf(path, sizeof(path), "%s/tests/data/%s", top ? top : ".", name);
+	return path;
+}

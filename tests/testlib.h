@@ -40,6 +40,9 @@ const char *test_path(const char *name);
 /* The same in slot 0 ... 3, which stays valid until that slot is used
  * again. */
 const char *test_slot_path(int slot, const char *name);
+/* The path of file name in tests/data ($RC_TOP, else the current
+ * directory, is the top of the tree); valid until the next call. */
+const char *test_data_path(const char *name);
 /* Write n bytes to path (abort on failure: set-up, not the test). */
 void test_put_file(const char *path, const void *p, size_t n);
 /* rc_grid_new, the program ended after a message when it fails. */

@@ -436,6 +436,9 @@ tool_common_option(struct tool *t, int opt, const char *arg)
 			    "default) or xy (shape (nx, ny))", arg);
 		t->npy_xy = strcmp(arg, "xy") == 0;
 		return 1;
+	case OPT_UNIFORM:
+		t->uniform = 1;
+		return 1;
 	case OPT_WISDOM:
 		if (arg[0] == '\0' || rc_is_stdio(arg))
 			tool_bad(t, "--wisdom %s: want a file name", arg);
@@ -658,6 +661,7 @@ read_grid(const struct tool *t, const char *path, const char *channel)
 	o.z_unit = t->z_unit;
 	o.periodic = (enum rc_periodic_opt)t->periodic;
 	o.npy_xy = t->npy_xy;
+	o.uniform = t->uniform;
 	if (channel != NULL && strspn(channel, "0123456789") == strlen(channel))
 		o.channel = atoi(channel);
 	else
@@ -714,6 +718,7 @@ tool_list_channels(const struct tool *t, const char *path)
 	o.ly = t->ly;
 	o.have_l = t->have_l;
 	o.npy_xy = t->npy_xy;	/* nx, ny as the grid would be read */
+	o.uniform = t->uniform;
 	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);

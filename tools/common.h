@@ -34,6 +34,7 @@ enum {
 	OPT_NO_PERIODIC,
 	OPT_NPY_ORDER,
 	OPT_CHANNEL,
+	OPT_UNIFORM,
 	OPT_TOOL_FIRST = 1100	/* a tool's own long-only options start here */
 };
 
@@ -62,6 +63,7 @@ struct tool {
 	const char *z_unit;	/* --z-unit: the unit of the input's values */
 	int periodic;		/* --periodic, --no-periodic (enum rc_periodic_opt) */
 	int npy_xy;		/* --npy-order xy */
+	int uniform;		/* --uniform: resample non-uniform x-z profiles */
 	int accept_missing;	/* the tool can use grids with missing points */
 	const char *channel;	/* --channel N|NAME of the main input, or NULL */
 	struct tool_file *files;	/* inputs and outputs (tool_input, tool_output) */
@@ -91,13 +93,15 @@ struct tool_file {
 	{ "fft-effort", required_argument, NULL, OPT_FFT_EFFORT }
 
 /* The options of the tools that read grids: units, periodicity, npy axis
- * order (handled by tool_common_option). */
+ * order, resampling of non-uniform profiles (handled by
+ * tool_common_option). */
 #define TOOL_GRID_LONGOPTS \
 	{ "unit", required_argument, NULL, OPT_UNIT }, \
 	{ "z-unit", required_argument, NULL, OPT_Z_UNIT }, \
 	{ "periodic", no_argument, NULL, OPT_PERIODIC }, \
 	{ "no-periodic", no_argument, NULL, OPT_NO_PERIODIC }, \
-	{ "npy-order", required_argument, NULL, OPT_NPY_ORDER }
+	{ "npy-order", required_argument, NULL, OPT_NPY_ORDER }, \
+	{ "uniform", no_argument, NULL, OPT_UNIFORM }
 
 /* Also installs tool_on_signal for SIGINT, SIGTERM and SIGHUP (unless
  * the signal is ignored, as under nohup). */

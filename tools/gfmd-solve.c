@@ -189,7 +189,7 @@ usage(void)
 "           [--checkpoint-every MIN] [--resume FILE] [-o FILE] [--json] [--pretty]\n"
 "           [-j N] [-q]\n"
 "           [-L LX[xLY]] [--unit U] [--z-unit U] [--periodic|--no-periodic]\n"
-"           [--npy-order yx|xy] [FILE]\n"
+"           [--npy-order yx|xy] [--uniform] [FILE]\n"
 "Solve the frictionless contact of an elastic half space (above) on the\n"
 "rigid indenter in FILE (or standard input) and write one row per pressure.\n"
 "  -p P[,P...]          reduced pressures p* = p/(E* gbar), gbar the rms\n"
@@ -259,6 +259,8 @@ usage(void)
 "  --z-unit U           the indenter's heights are in length unit U\n"
 "  --periodic, --no-periodic  the indenter is (not) one period of a surface\n"
 "  --npy-order yx|xy    .npy shape (ny, nx) (default) or (nx, ny)\n"
+"  --uniform            resample an x-z profile whose x is not uniformly\n"
+"                       spaced linearly onto as many points\n"
 "  --channel N|NAME     channel of a multi-channel input (default: the first\n"
 "                       whose values are lengths)\n"
 "  -h, --help           this help\n"
@@ -310,6 +312,7 @@ struct run {
 	rc_fft fft;			/* the analysis plan (spectral gbar_c) */
 	rc_fft *ana;			/* it, or the solver's when alike */
 	rc_solver *solver;
+	int effort_set;			/* o.so.fft_effort decided */
 	double plan_seconds;
 	double l_adh_dx;		/* adhesion: l_adh / dx; 0: none */
 	size_t npressures;
@@ -592,6 +595,52 @@ adhesion_setup(struct run *r)
 		    l, dx, sqrt(r->o.so.adhesion * dx / r->o.modulus), l / dx);
 }
 
+/* The work ahead of the FFT plans, for the planning effort (fft.h): the
+ * transform pairs of one row, 2 a FIRE iteration (38-149 iterations at
+ * p* = 0.05 on 512^2-1024^2 surfaces, measured), and the solves of one
+ * approach (a bracket, then its refinement: assumed, not measured). */
+#define GFMD_PAIRS_PER_ROW		200.0
+#define GFMD_SOLVES_PER_APPROACH	5.0
+
+/* The solver's planning effort, decided once: the work ahead,
+ * GFMD_PAIRS_PER_ROW transform pairs a row. */
+static enum rc_fft_effort
+solver_effort(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+
+	if (!r->effort_set) {
+		o->so.fft_effort = tool_fft_effort(&r->t, r->h->nx, r->h->ny,
+		    GFMD_PAIRS_PER_ROW * (o->napproach ?
+		    GFMD_SOLVES_PER_APPROACH : 1) * (double)r->npressures);
+		r->effort_set = 1;
+	}
+	return o->so.fft_effort;
+}
+
+/* The solver, planned and timed. */
+static void
+solver_make(struct run *r)
+{
+	struct gfmd_opts *o = &r->o;
+	rc_err err;
+
+	o->so.modulus = o->modulus;
+	o->so.stop = (volatile int *)&stop_flag;
+	r->pr.name = r->t.name;
+	r->pr.width = 0;
+	if (!r->t.quiet && isatty(STDERR_FILENO)) {
+		o->so.progress = show_progress;
+		o->so.progress_ctx = &r->pr;
+	}
+	solver_effort(r);
+	r->plan_seconds = rc_clock();
+	if ((r->solver = rc_solver_new(r->h, &o->so, &err)) == NULL)
+		tool_fail(&r->t, "%s", err.msg);
+	tool_fft_finish(&r->t);
+	r->plan_seconds = rc_clock() - r->plan_seconds;
+}
+
 static void
 indenter_setup(struct run *r)
 {
@@ -617,15 +666,35 @@ indenter_setup(struct run *r)
 		    "compliance; drop --kernel or add --boundary periodic",
 		    rc_kernel_name(o->so.kernel), name);
 	/* The analysis plan lives as long as the solver; --fd and free
-	 * boundaries need none. */
+	 * boundaries need none.  It is the solver's when that plans with
+	 * FFTW_ESTIMATE too (the same transforms bit for bit): the solver is
+	 * then made first and gbar taken on its plan, not on a plan of its
+	 * own (planning, buffers and their first touch: 20 ms of CPU of a
+	 * 330 ms process at 512^2, perf). */
 	memset(&r->fft, 0, sizeof(r->fft));
+	r->ana = &r->fft;
 	if (o->so.boundary == RC_BOUNDARY_FREE)
 		r->gbar = rc_gbar_open(h);
 	else if (o->fd)
 		r->gbar = rc_gbar_central(h);
-	else if (rc_fft_init(&r->fft, h->nx, h->ny, RC_FFT_ESTIMATE, &err) != 0 ||
-	    rc_rms_gradient(h, &r->fft, &r->gbar, &err) != 0)
-		tool_fail(&r->t, "%s", err.msg);
+	else {
+		rc_fft *sf = NULL;
+
+		if (solver_effort(r) == RC_FFT_ESTIMATE) {
+			solver_make(r);
+			if ((sf = rc_solver_fft(r->solver)) != NULL &&
+			    (sf->nx != h->nx || sf->ny != h->ny ||
+			    sf->effort != RC_FFT_ESTIMATE))
+				sf = NULL;
+		}
+		if (sf != NULL)
+			r->ana = sf;
+		else if (rc_fft_init(&r->fft, h->nx, h->ny, RC_FFT_ESTIMATE,
+		    &err) != 0)
+			tool_fail(&r->t, "%s", err.msg);
+		if (rc_rms_gradient(h, r->ana, &r->gbar, &err) != 0)
+			tool_fail(&r->t, "%s", err.msg);
+	}
 	for (size_t k = 0; k < rc_grid_size(h); k++) {
 		lo = fmin(lo, h->z[k]);
 		hi = fmax(hi, h->z[k]);
@@ -639,14 +708,8 @@ indenter_setup(struct run *r)
 		    name);	range_check(r, hi - lo);
 }
 
-/* The work ahead of the FFT plans, for the planning effort (fft.h): the
- * transform pairs of one row, 2 a FIRE iteration (38-149 iterations at
- * p* = 0.05 on 512^2-1024^2 surfaces, measured), and the solves of one
- * approach (a bracket, then its refinement: assumed, not measured). */
-#define GFMD_PAIRS_PER_ROW		200.0
-#define GFMD_SOLVES_PER_APPROACH	5.0
-
-/* The solver, planned and timed, started from --init or the checkpoint. */
+/* The solver (unless indenter_setup made it), started from --init or
+ * the checkpoint. */
 static void
 solver_setup(struct run *r)
 {
@@ -654,26 +717,10 @@ solver_setup(struct run *r)
 	rc_fft *sf;
 	rc_err err;
 
-	o->so.modulus = o->modulus;
-	o->so.stop = (volatile int *)&stop_flag;
-	r->pr.name = r->t.name;
-	r->pr.width = 0;
-	if (!r->t.quiet && isatty(STDERR_FILENO)) {
-		o->so.progress = show_progress;
-		o->so.progress_ctx = &r->pr;
-	}
-	/* The work ahead: GFMD_PAIRS_PER_ROW transform pairs a row. */
-	o->so.fft_effort = tool_fft_effort(&r->t, r->h->nx, r->h->ny,
-	    GFMD_PAIRS_PER_ROW * (o->napproach ? GFMD_SOLVES_PER_APPROACH : 1) *
-	    (double)r->npressures);
-	r->plan_seconds = rc_clock();
-	if ((r->solver = rc_solver_new(r->h, &o->so, &err)) == NULL)
-		tool_fail(&r->t, "%s", err.msg);
-	tool_fft_finish(&r->t);
-	r->plan_seconds = rc_clock() - r->plan_seconds;
+	if (r->solver == NULL)
+		solver_make(r);
 	/* The analysis on the solver's plans when they are made alike (the
 	 * same transforms bit for bit): one set of buffers, not two. */
-	r->ana = &r->fft;
 	if (r->fft.real != NULL && (sf = rc_solver_fft(r->solver)) != NULL &&
 	    sf->nx == r->fft.nx && sf->ny == r->fft.ny &&
 	    sf->effort == r->fft.effort) {

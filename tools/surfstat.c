@@ -92,6 +92,8 @@ usage(void)
 	    "  --z-unit U            the input's heights are in length unit U\n"
 	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
 	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
+	    "  --uniform             resample an x-z profile whose x is not uniformly\n"
+	    "                        spaced linearly onto as many points\n"
 	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
 	    "                        first whose values are lengths)\n"
 	    "  --channels            list the input's channels instead: channel title\n"

@@ -110,17 +110,16 @@ rc__fire_alloc(rc_solver *s, rc_err *err)
 	return 0;
 }
 
-/* Step 2 on the points k0 <= k < k1 of s->sigma, which holds K u: f_eff
- * into s->sigma and the contact set; adds the squared force off the
- * wall, the pressure on it, the contact count and the power f_eff . v
- * to sums[0..3]. */
+/* Step 2 on the points k0 <= k < k1 of f, which holds K u: f_eff into f
+ * and the contact set; adds the squared force off the wall, the pressure
+ * on it, the contact count and the power f_eff . v to sums[0..3]. */
 static void
-wall_range(rc_solver *s, double p, size_t k0, size_t k1, double *sums)
+wall_range(rc_solver *s, double *f, double p, size_t k0, size_t k1,
+    double *sums)
 {
 	size_t k;
 	double sum_d2 = 0, sum_s = 0, on = 0, pw = 0;
 	const double *u = s->u, *h = s->height, *v = s->fire_vel;
-	double *f = s->sigma;
 	unsigned char *contact = s->contact;
 
 	for (k = k0; k < k1; k++) {
@@ -156,19 +155,20 @@ wall_result(rc_solver *s, double p, double *sums, size_t *n_contact,
 	return rc__residual(s, p, sums[0], sums[1]);
 }
 
-/* Steps 1 and 2 over the grid: f_eff into s->sigma and the contact set;
- * returns the residual of this state, the number of contact points and
- * the power f_eff . v. */
+/* Steps 1 and 2 over the grid: f_eff into f (s->sigma, or the
+ * operator's real buffer) and the contact set; returns the residual of
+ * this state, the number of contact points and the power f_eff . v. */
 static double
-wall_force(rc_solver *s, double p, size_t *n_contact, double *power)
+wall_force(rc_solver *s, double *f, double p, size_t *n_contact,
+    double *power)
 {
 	size_t b, nb = (s->n + CHUNK - 1) / CHUNK;
 	double sums[4] = { 0, 0, 0, 0 };
 
-	rc_elastic_force(&s->el, s->u, s->sigma);
+	rc_elastic_force(&s->el, s->u, f);
 #pragma omp parallel for reduction(+:sums[:4]) schedule(static)
 	for (b = 0; b < nb; b++)
-		wall_range(s, p, b * CHUNK, b * CHUNK + CHUNK < s->n ?
+		wall_range(s, f, p, b * CHUNK, b * CHUNK + CHUNK < s->n ?
 		    b * CHUNK + CHUNK : s->n, sums);
 	return wall_result(s, p, sums, n_contact, power);
 }
@@ -394,7 +394,7 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 
 			rc_fft_block_rows(f, b, &j0, &j1);
 			rc_fft_rows_c2r(f, s->sigma, b);
-			wall_range(s, p, j0 * nx, j1 * nx, sums);
+			wall_range(s, s->sigma, p, j0 * nx, j1 * nx, sums);
 			rc_fft_rows_r2c(f, s->sigma, b);
 		}
 		e->n_r2c++;
@@ -434,7 +434,10 @@ fire_blocked(rc_solver *s, double p, double *residual, int *status)
 	return it;
 }
 
-/* The iterations with whole-grid transforms and passes. */
+/* The iterations with whole-grid transforms and passes.  With the mass
+ * table (one process) the force stays in the operator's real buffer,
+ * where a follows it: K u, f_eff and a are one grid, not s->sigma as
+ * well, which would be a fourth grid through the cache each iteration. */
 static long
 fire_plain(rc_solver *s, double p, double *residual, int *status)
 {
@@ -442,19 +445,20 @@ fire_plain(rc_solver *s, double p, double *residual, int *status)
 	size_t n = s->n, nb = (n + CHUNK - 1) / CHUNK, n_contact, b;
 	struct fire_step st = { RC__FIRE_START, 0, 1, 0 };
 	double inv_n = 1.0 / (double)e->n, *table = mass_table(e, inv_n);
+	double *force = table != NULL ? e->fft.real : s->sigma;
 	rc_fft_multiplier tabled = { table, 1.0, 0, 0 };
 	long it;
 
 	for (it = 0; ; it++) {
 		double power, sums[3] = { 0, 0, 0 }, *a;
 
-		*residual = wall_force(s, p, &n_contact, &power);
+		*residual = wall_force(s, force, p, &n_contact, &power);
 		if (fire_done(s, it, *residual, n_contact, status))
 			break;
 		if (table != NULL) {
 			table[0] = inv_n / mass0_of(s, n_contact);
 			a = e->fft.real;
-			rc_elastic_convolve(e, s->sigma, a, &tabled);
+			rc_elastic_convolve(e, force, a, &tabled);
 		} else
 			a = rc__fire_mass_weighted(e, s->sigma,
 			    mass0_of(s, n_contact));

@@ -18,9 +18,9 @@ check "no dependency message when all are present" \
 
 mk PKG_CONFIG=false all; st=$?
 check "every package missing: make stops with exit 2 (got $st)" [ "$st" -eq 2 ]
-check "names the pkg-config packages" grep -q 'not found: fftw3 gsl libpng libzip libxml-2.0 netcdf' "$T_TMP/out"
+check "names the pkg-config packages" grep -q 'not found: fftw3 gsl libpng libzip libxml-2.0 netcdf zlib yaml-0.1' "$T_TMP/out"
 check "names the Debian packages to install" \
-    grep -q 'apt-get install -y libfftw3-dev libgsl-dev libnetcdf-dev libpng-dev libxml2-dev libzip-dev zlib1g-dev$' "$T_TMP/out"
+    grep -q 'apt-get install -y libfftw3-dev libgsl-dev libnetcdf-dev libpng-dev libxml2-dev libyaml-dev libzip-dev zlib1g-dev$' "$T_TMP/out"
 check "stops before any compiler command" sh -c "! grep -q -- '-c -o' '$T_TMP/out'"
 
 mk 'PKGS=fftw3 gsl nonexistent' all; st=$?
