@@ -82,7 +82,7 @@ zip_mem(const unsigned char *b, size_t n, const rc_read_opts *o,
 	if (memmem(b, n, "xl/workbook.xml", 15) != NULL)
 		return rc__xlsx_read(b, n, o, s, err);
 	if (memmem(b, n, "meta.yml", 8) != NULL)
-		return rc__ce_read(b, n, o, s, depth, err);
+		return rc__ce_read(b, n, o, s, depth, rc__read_member, err);
 	return -1;
 }
 
@@ -489,13 +489,6 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
 		*n = s.n;
 	rc__chanset_free(&s);
 	return r;
-}
-
-void
-rc_read_opts_init(rc_read_opts *o)
-{
-	memset(o, 0, sizeof(*o));
-	o->lx = o->ly = 1;
 }
 
 int

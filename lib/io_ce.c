@@ -228,7 +228,8 @@ complete(rc_grid *g, const struct topo *p, rc_err *err)
 /* One topography: its member read, its channel taken, completed. */
 static int
 read_topo(zip_t *za, const struct topo *p, const rc_read_opts *o,
-    uint64_t *budget, rc_chanset *s, rc_err *err)
+    uint64_t *budget, rc_chanset *s, rc__member_reader read_member,
+    rc_err *err)
 {
 	rc_read_opts mo;
 	rc_chanset ms = { 0 };
@@ -252,7 +253,7 @@ read_topo(zip_t *za, const struct topo *p, const rc_read_opts *o,
 		rc_read_opts_init(&mo);
 	mo.channel = 0;		/* those choose among the container's */
 	mo.channel_name = NULL;
-	if (rc__read_member(b, len, &mo, &ms, 1, err) != 0)
+	if (read_member(b, len, &mo, &ms, 1, err) != 0)
 		goto fail;
 	if ((size_t)p->source >= ms.n) {
 		rc_seterr(err, "data_source %ld, but the file has %zu channel%s",
@@ -294,7 +295,7 @@ chosen(const rc_read_opts *o, const struct topo *p, size_t idx)
 
 int
 rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
-    rc_chanset *s, int depth, rc_err *err)
+    rc_chanset *s, int depth, rc__member_reader read_member, rc_err *err)
 {
 	yaml_parser_t parser;
 	yaml_document_t doc;
@@ -350,7 +351,7 @@ rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 				 * the others keep their place and title. */
 				if (rc__chanset_add(s, NULL, p.name, err) != 0)
 					goto out;
-			} else if (read_topo(za, &p, o, &budget, s, err) != 0)
+			} else if (read_topo(za, &p, o, &budget, s, read_member, err) != 0)
 				goto out;
 			ntopo++;
 		}

@@ -201,10 +201,16 @@ int rc__zip_entry(struct zip *za, const char *what, const char *name,
  * else the first sheet as a table of columns (io_txt.c's reading). */
 int rc__xlsx_read(const unsigned char *buf, size_t len,
     const rc_read_opts *o, rc_chanset *s, rc_err *err);
+/* A reader of every channel of bytes in memory at a nesting depth, as
+ * rc__read_member below. */
+typedef int (*rc__member_reader)(const unsigned char *b, size_t n,
+    const rc_read_opts *o, rc_chanset *s, int depth, rc_err *err);
 /* A contact.engineering container (io_ce.c): one channel per
- * measurement meta.yml lists, each member read by rc__read_member. */
+ * measurement meta.yml lists, each member read by read_member (io.c's
+ * rc__read_member, passed down so that the container's reader does not
+ * call back into the file that calls it: tests/e2e/callgraph.sh). */
 int rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
-    rc_chanset *s, int depth, rc_err *err);
+    rc_chanset *s, int depth, rc__member_reader read_member, rc_err *err);
 /* Every channel of the bytes b[0..n) (io.c), read as a file of unknown
  * name at nesting depth (a member of a container is at depth 1: no
  * container nests in it). */

@@ -653,3 +653,12 @@ rc__header_split(char *line, char **key, char **val)
 	*val = rc__header_trim(eq + 1);
 	return 0;
 }
+
+/* The reading defaults (io.h), here below io.c and the readers it
+ * dispatches to, which set up their members' reading with them. */
+void
+rc_read_opts_init(rc_read_opts *o)
+{
+	memset(o, 0, sizeof(*o));
+	o->lx = o->ly = 1;
+}
