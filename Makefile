@@ -5,6 +5,7 @@
 #   make check SANITIZE=1  the same under AddressSanitizer + UBSan
 #   make demo            the built-in default example
 #   make bench           benchmarks (print figures, never fail on time)
+#   make doc             doc/*.md regenerated from the benchmarks and tests
 #   make install PREFIX=/usr/local
 
 PREFIX  ?= /usr/local
@@ -143,6 +144,19 @@ check-hard: $(TOOLS)
 bench: $(TOOLS) $(BENCHES)
 	@for b in $(BENCHES); do echo "== $$b"; $$b || exit 1; done
 	@for s in bench/*.sh; do [ -f "$$s" ] || continue; echo "== $$s"; RC_BIN=$(BIN) RC_BENCH_BIN=$(O)/bench sh $$s || exit 1; done
+
+# make doc: doc/NAME.md from doc/NAME.md.in, each generated section the
+# output of the benchmark or test its marker names (doc/gen.sh): the
+# measured record the manual pages point to.  Runs them all, so not part
+# of check: the full benchmarks (bench_gfmd up to 2048^2) ran for over
+# half an hour on the shared 2-core test machine; DOC_QUICK=1 runs their
+# small sizes (256^2 and 512^2; 512^2 and 1024^2 for the process and
+# memory scripts).  tests/e2e/docs.sh checks the made documents.
+DOC_IN = $(wildcard doc/*.md.in)
+.PHONY: doc
+doc: $(TOOLS) $(BENCHES) $(O)/bench/peakrss $(TESTS)
+	@$(if $(DOC_QUICK),BENCH_QUICK=1 BENCH_PROCESS_SIZES="512 1024" BENCH_SIZES="512 1024") \
+	    sh doc/gen.sh $(BIN) $(O)/bench $(O)/tests $(DOC_IN)
 
 # peak RSS of a command (bench/bench_memory.sh)
 bench: $(O)/bench/peakrss
