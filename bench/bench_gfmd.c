@@ -38,7 +38,7 @@
  * are padded pairs, as the fire row's.
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
  * the blocked transforms (fft.h) and FIRE runs its passes block by block
- * between them (solver_fire.c), fire-plain and cg-plain solve the same
+ * between them (solver_fire_loop.c), fire-plain and cg-plain solve the same
  * map with FFTW's whole-grid pair and separate passes: the gain.
  *
  * Both boundary kinds side by side (column boundary): free boundaries

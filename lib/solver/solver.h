@@ -82,7 +82,7 @@ typedef struct rc_solver_opts {
 	enum rc_fft_effort fft_effort;
 	/* Periodic grids of at least this many points take the blocked
 	 * transforms (fft.h, rc_fft_convolve), on which FIRE runs its passes
-	 * block by block (solver_fire.c); RC_FFT_BLOCKED_POINTS by default,
+	 * block by block (solver_fire_loop.c); RC_FFT_BLOCKED_POINTS by default,
 	 * 0 for always, SIZE_MAX for never (the same answers to rounding).
 	 * Serial build. */
 	size_t fft_block_points;

@@ -6,10 +6,13 @@
  *     (displacement control), solver_fire_adh.c and
  *     solver_fire_adh_free.c (the adhesive solve on periodic and free
  *     boundaries);
- *   minimisers: solver_fire.c (FIRE in heights), solver_fire_free.c
- *     (FIRE on pressures), solver_cg.c, solver_cg_plastic.c (CG),
- *     solver_fire_adh_loop.c (adhesive FIRE in heights);
- *   the operator (solver_operator.c: G, FIRE's mass, the stiffness
+ *   minimisers: solver_fire.c (FIRE in heights against the hard wall),
+ *     solver_fire_free.c (FIRE on pressures), solver_cg.c,
+ *     solver_cg_plastic.c (CG), solver_fire_adh_pass.c (FIRE in heights
+ *     with an adhesive law);
+ *   the FIRE loop in heights that the two FIRE-in-heights files run with
+ *     their interaction's passes (solver_fire_loop.c, rc__fire_parts);
+ *     the operator (solver_operator.c: G, FIRE's mass, the stiffness
  *     scale), the interactions (solver_wall.c: the hard wall of the
  *     pressure methods; solver_hardness.c: the hardness cap; adhesion.c:
  *     the adhesive laws) and the convergence measure (solver_measure.c);
@@ -110,8 +113,8 @@ int rc__fire_alloc(rc_solver *s, rc_err *err);
 /* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0
  * (solver_operator.c); e's real buffer, returned. */
 double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
-/* FIRE with the adhesive law (solver_fire_adh.c, its loop
- * solver_fire_adh_loop.c): load control at p
+/* FIRE with the adhesive law (solver_fire_adh.c, its interaction
+ * solver_fire_adh_pass.c): load control at p
  * (RC__ADH_LOAD), the mean height held at max h - delta (RC__ADH_LEVEL;
  * the pressure found into *p) or, a periodic layer, its rigid substrate
  * held at approach delta (RC__ADH_SUBSTRATE: the mean mode on the spring
@@ -119,15 +122,15 @@ double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
 enum { RC__ADH_LOAD = 0, RC__ADH_LEVEL = 1, RC__ADH_SUBSTRATE = 2 };
 int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
     rc_solve_result *res, rc_err *err);
-/* What that loop runs on: the operator's grid of n points, of which
- * n_act interact (the rest: h = -inf); mass0 > 0 the mean mode's mass
- * when the rigid level is held (free boundaries: p = 0, the load the sum
- * of the tractions, which then scales the residual); else load
- * control's rule (solver_fire.c).  The loop: control 0, p on
- * every one of the n points; control 1, <u> held at target (periodic
- * only), p found; control 2 (periodic only), p = spring (<u> - target)
- * from the state, spring = k_0 > 0 of the layer (unused by the other
- * two).  Status as rc_solver_solve. */
+/* What the adhesive FIRE runs on (solver_fire_adh_pass.c): the
+ * operator's grid of n points, of which n_act interact (the rest: h =
+ * -inf); mass0 > 0 the mean mode's mass when the rigid level is held
+ * (free boundaries: p = 0, the load the sum of the tractions, which then
+ * scales the residual); else load control's rule (rc__fire_mass0).
+ * Control 0, p on every one of the n points; control 1, <u> held at
+ * target (periodic only), p found; control 2 (periodic only), p = spring
+ * (<u> - target) from the state, spring = k_0 > 0 of the layer (unused by
+ * the other two).  Status as rc_solver_solve. */
 typedef struct rc__adh_view {
 	rc_elastic *el;
 	size_t n;
@@ -140,7 +143,7 @@ typedef struct rc__adh_view {
 	rc__watch *watch;
 } rc__adh_view;
 struct rc_adhesion;
-int rc__adh_loop(const rc__adh_view *w, const struct rc_adhesion *law,
+int rc__adh_relax(const rc__adh_view *w, const struct rc_adhesion *law,
     int control, double *p, double target, const rc_solver_opts *opts,
     rc_solve_result *res);
 /* Free boundaries (solver_fire_adh_free.c): the padded operator and
@@ -210,9 +213,9 @@ rc__plastic_active(double sigma, double g, double H)
 	    (sigma >= H && g > 0);
 }
 
-/* FIRE's parameters, shared by its three loops (solver_fire.c, which
- * says what each is and how it was tuned; solver_fire_free.c;
- * solver_fire_adh.c). */
+/* FIRE's parameters, shared by its two loops (solver_fire_loop.c, which
+ * says what each is and how it was tuned, in heights; solver_fire_free.c
+ * on pressures). */
 #define RC_FIRE_DT_START	1.0
 #define RC_FIRE_DT_MAX		2.0
 #define RC_FIRE_N_MIN		1
@@ -223,8 +226,8 @@ rc__plastic_active(double sigma, double g, double H)
 #define RC_FIRE_M0_SCALE	2.0
 #define RC_FIRE_PROGRESS_EVERY	50
 
-/* FIRE's schedule and mixing, written once for its loops (solver_fire.c
- * says what they are): after a step of power P, dt and alpha grow when
+/* FIRE's schedule and mixing, written once for its loops
+ * (solver_fire_loop.c says what they are): after a step of power P, dt and alpha grow when
  * P > 0 (after RC_FIRE_N_MIN such steps in a row; dt up to dt_max), else
  * the step restarts (v = 0; returns 1) with a smaller dt and alpha reset;
  * the FIRE 2.0 mixing v' = mix_v (v + dt a) + mix_a a, |v'| = |v + dt a|,
@@ -264,5 +267,78 @@ rc__fire_mix(const rc__fire *fs, double aa, double av, double vv,
 		*mix_a = fs->alpha * sqrt(vn2 / aa);
 	}
 }
+
+/* The mean mode's mass of FIRE in heights while the load is prescribed
+ * (solver_fire.c says why): M0_SCALE k_min sqrt(max(n_c, 1) / N) from
+ * the contact count n_c of N points. */
+static inline double
+rc__fire_mass0(double k_min, double n_contact, double points)
+{
+	return RC_FIRE_M0_SCALE * k_min *
+	    sqrt((n_contact > 0 ? n_contact : 1) / points);
+}
+
+/* The FIRE loop in heights (solver_fire_loop.c), over an operator (an
+ * rc_elastic: K and the mass-weighting M^-1, m_q = k_q) and an
+ * interaction given as passes.  A pass runs over the points
+ * k0 <= k < k1 (called once per range of points: never per point) and
+ * adds its sums to sum[0 .. RC__FIRE_SUMS-1] and lowers *least (this
+ * process's; the sums the loop completes over a distributed operator's
+ * ranks); after each pass a hook sees the sums over the grid:
+ *   force (x = f holding K u): f_eff = -(p + K u - the interaction's
+ *     traction) into f, a = 0 on the contact set it marks; forced fills
+ *     the report (the residual, the power f_eff . v, the contact count,
+ *     the mean mode's mass for this step, whether to halt);
+ *   mixing (the loop's own, x = a = M^-1 f_eff): |a|^2, a.v, |v|^2
+ *     into sum[0..2] with a = 0 on C and v = 0 on a restart; with
+ *     mean_sums the sums of a and v into sum[3..4]; mixed (may be NULL)
+ *     makes the first three those of the step the update takes;
+ *   update (x = a): v' = mix_v (v + dt a) + mix_a a, u += dt v', the
+ *     clamp at h; updated (may be NULL) follows it.
+ * The plain path runs a pass on chunks of grain points, or with grain 0
+ * on each thread's share; on the blocked transforms (fft.h), when fuse
+ * is set, on each block of rows between its row transforms (the update
+ * must then leave u final: no updated hook).  Returns 0 converged
+ * (residual <= opts.tol), RC__FIRE_HALTED (the report's halt), else 1
+ * (out of iterations, stopped, stalled); *iterations, *residual. */
+#define RC__FIRE_SUMS	6
+enum { RC__FIRE_HALTED = 2 };
+typedef struct rc__fire_step {
+	double dt;
+	int restart;		/* P <= 0: v = 0 before this step */
+	double mix_v, mix_a;	/* v' = mix_v (v + dt a) + mix_a a */
+} rc__fire_step;
+typedef struct rc__fire_report {
+	double residual;
+	double power;		/* f_eff . v */
+	double contact;		/* points in contact */
+	double mass0;		/* the mean mode's mass of this step */
+	int halt;		/* end the solve before this step */
+} rc__fire_report;
+typedef struct rc__fire_parts {
+	rc_elastic *el;		/* the operator */
+	size_t n;		/* its points (this process's) */
+	double points;		/* the points that interact (the progress
+				 * report's contact share) */
+	const double *u;	/* the heights (the update's) */
+	double *f;		/* n doubles for the force where the
+				 * operator's own buffer cannot hold it */
+	const double *v;	/* the velocities (the mixing's) */
+	const unsigned char *contact;	/* C, of the force pass */
+	void *ctx;		/* the interaction's state */
+	size_t grain;
+	int fuse;
+	int mean_sums;
+	void (*force)(void *ctx, double *x, const rc__fire_step *st,
+	    size_t k0, size_t k1, double *sum, double *least);
+	void (*update)(void *ctx, double *x, const rc__fire_step *st,
+	    size_t k0, size_t k1, double *sum, double *least);
+	void (*forced)(void *ctx, const double *sum, double least,
+	    rc__fire_report *r);
+	void (*mixed)(void *ctx, double *sum);
+	void (*updated)(void *ctx, const double *sum);
+} rc__fire_parts;
+int rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
+    rc__watch *watch, long *iterations, double *residual);
 
 #endif
