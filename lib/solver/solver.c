@@ -9,10 +9,11 @@
  * bound of solver_cg.c for both methods (FIRE then runs on the pressures,
  * solver_fire_free.c).
  *
- * A hardness (perfect plasticity): the CG of solver_cg_plastic.c, or FIRE
- * on the pressures (solver_fire_free.c) on either boundary kind, both
- * with the plastic CG's measure; the elastic periodic FIRE
- * (solver_fire.c) is not involved.
+ * A hardness (perfect plasticity): the CG (solver_cg.c) or FIRE on the
+ * pressures (solver_fire_free.c) on either boundary kind, both on the
+ * hardness cap (interaction.h, solver_hardness.c) instead of the hard
+ * wall (solver_wall.c); the elastic periodic FIRE (solver_fire.c) is not
+ * involved.
  */
 #include "solver_impl.h"
 
@@ -267,8 +268,6 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		r = rc__fire_sigma_solve(s, p, res, err);
 	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
-	else if (rc_solver_opts_plastic(&s->opts))
-		r = rc__cg_plastic_solve(s, p, res, err);
 	else
 		r = rc__cg_solve(s, p, res, err);
 	if (r < 0)
