@@ -34,6 +34,9 @@ typedef struct rc__interaction {
 	 * Returns 1 if G sigma is now stale. */
 	int (*restore_load)(struct rc_solver *s, double p, double sum,
 	    double *disp);
+	/* its column of the solution: the fraction of the points at H
+	 * (a_plastic; rc_solver_plastic_fraction); NULL: none (the wall) */
+	double (*plastic_fraction)(const struct rc_solver *s);
 	/* The CG's rules for it (solver_cg.c says what they are and
 	 * why): Polonsky & Keer's with re-entry (the wall), or projected
 	 * steps within a trust region (the cap). */

@@ -357,16 +357,15 @@ rc_solver_attractive_fraction(const rc_solver *s)
 	return rc_solver_opts_adhesive(&s->opts) ? s->a_attr : 0;
 }
 
+/* The interaction's own column (interaction.h): the cap's; 0 for the
+ * wall and for the methods in heights, which have no cap. */
 double
 rc_solver_plastic_fraction(const rc_solver *s)
 {
-	size_t k, at = 0;
+	rc__interaction in;
 
-	if (!rc_solver_opts_plastic(&s->opts))
-		return 0;
-	for (k = 0; k < s->n; k++)
-		at += s->sigma[k] >= s->opts.hardness;
-	return (double)at / (double)s->n;
+	rc__interaction_of(s, &in);
+	return in.plastic_fraction ? in.plastic_fraction(s) : 0;
 }
 
 rc_fft *

@@ -165,7 +165,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			}
 		}
 		bound = k_max * sqrt((gsum + pen) * inv_n) / p;
-		next = rc__cg_next(s, &in, p, bound, it, &residual, &status);
+		next = rc__cg_next(s, &in, p, bound, it, 1, &residual, &status);
 		if (next == RC__CG_STOP)
 			break;
 		if (next == RC__CG_STALE) {

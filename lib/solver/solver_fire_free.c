@@ -178,26 +178,6 @@ stiffness_times(rc_solver *s, const double *f)
 	return e->fft.real;
 }
 
-/* The stopping rule (solver_cg.c's, from the bound of step 2): periodic,
- * rc__cg_next with its periodic checks of the residual itself; free, the
- * check is the bound itself, so it runs only at the end. */
-static int
-stop_rule(rc_solver *s, const rc__interaction *in, double p, double bound,
-    long it, double *residual, int *status)
-{
-	if (!s->free_bc)
-		return rc__cg_next(s, in, p, bound, it, residual, status);
-	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-	    (s->opts.stop && *s->opts.stop) ||
-	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
-		*residual = rc__pressure_check(s, in, p);
-		if (*residual <= s->opts.tol)
-			*status = 0;
-		return RC__CG_STOP;
-	}
-	return RC__CG_GO;
-}
-
 /* Long: the FIRE iteration on pressures, its passes sharing their sums
  * as in solver_fire.c. */
 int
@@ -254,8 +234,10 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			ff += f[k] * f[k];
 			power += f[k] * v[k];
 		}
-		next = stop_rule(s, &in, p, k_max * sqrt(ff / (double)n) / p,
-		    it, &residual, &status);
+		/* free: the check is the bound itself, so it runs only at
+		 * the end */
+		next = rc__cg_next(s, &in, p, k_max * sqrt(ff / (double)n) / p,
+		    it, !s->free_bc, &residual, &status);
 		if (next == RC__CG_STOP)
 			break;
 		if (next == RC__CG_STALE)

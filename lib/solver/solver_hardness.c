@@ -157,6 +157,17 @@ cap_start(rc_solver *s, double p)
 	cap_restore_load(s, p, 0, NULL);
 }
 
+/* The fraction of the points at H: flattened plastically. */
+static double
+cap_plastic_fraction(const rc_solver *s)
+{
+	size_t k, at = 0;
+
+	for (k = 0; k < s->n; k++)
+		at += s->sigma[k] >= s->opts.hardness;
+	return (double)at / (double)s->n;
+}
+
 /* The CG runs projected steps in a trust region (solver_cg.c). */
 void
 rc__cap(const rc_solver *s, rc__interaction *in)
@@ -165,5 +176,6 @@ rc__cap(const rc_solver *s, rc__interaction *in)
 	in->start = cap_start;
 	in->level = cap_level;
 	in->restore_load = cap_restore_load;
+	in->plastic_fraction = cap_plastic_fraction;
 	in->cg_reentry = 0;
 }

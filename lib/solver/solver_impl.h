@@ -178,12 +178,12 @@ double rc__stiffness_max(const rc_solver *s);
 void rc__wall_start(rc_solver *s, double p);
 /* The stopping rule of the pressure methods (solver_measure.c), after
  * iteration it has its gap bound: STOP (rc__pressure_check ran:
- * *residual, and *status 0 if it met opts.tol), STALE (a periodic check
- * of the residual itself ran and missed: the iterate must be
- * recomputed) or GO. */
+ * *residual, and *status 0 if it met opts.tol), STALE (recheck: a
+ * periodic check of the residual itself ran and missed: the iterate must
+ * be recomputed) or GO. */
 enum { RC__CG_GO, RC__CG_STOP, RC__CG_STALE };
 int rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
-    double bound, long it, double *residual, int *status);
+    double bound, long it, int recheck, double *residual, int *status);
 
 /* FIRE's parameters, shared by its three loops (solver_fire.c, which
  * says what each is and how it was tuned; solver_fire_free.c;

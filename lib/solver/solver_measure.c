@@ -119,7 +119,7 @@ rc__pressure_check(rc_solver *s, const rc__interaction *in, double p)
 
 int
 rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
-    double bound, long it, double *residual, int *status)
+    double bound, long it, int recheck, double *residual, int *status)
 {
 	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
 	    (s->opts.stop && *s->opts.stop) ||
@@ -132,7 +132,7 @@ rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
 	/* The bound can stay far above the residual (seen on strongly
 	 * warped surfaces: residual below tol for thousands of
 	 * iterations); check the residual itself now and then. */
-	if (it > 0 && it % CHECK_EVERY == 0) {
+	if (recheck && it > 0 && it % CHECK_EVERY == 0) {
 		*residual = rc__pressure_check(s, in, p);
 		if (*residual <= s->opts.tol) {
 			*status = 0;

@@ -80,5 +80,6 @@ rc__wall(const rc_solver *s, rc__interaction *in)
 	in->start = rc__wall_start;
 	in->level = wall_level;
 	in->restore_load = wall_restore_load;
+	in->plastic_fraction = NULL;
 	in->cg_reentry = 1;
 }
