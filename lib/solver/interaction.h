@@ -50,12 +50,14 @@ void rc__cap(const struct rc_solver *s, rc__interaction *in);
 
 /* Whether a point with pressure sigma and gap g takes part in a bounded
  * step: free (0 < sigma < H), or its force f = -g pointing into the box
- * (at zero and penetrating, or at H with an open gap). */
+ * (at zero and penetrating, or at H with an open gap).  Written as
+ * (sigma > 0 or g < 0) and (sigma < H or g > 0), the same for every
+ * sigma and g (H > 0), so that the points out of contact (most of them)
+ * cost the wall's two comparisons. */
 static inline int
 rc__active(double sigma, double g, double H)
 {
-	return (sigma > 0 && sigma < H) || (sigma <= 0 && g < 0) ||
-	    (sigma >= H && g > 0);
+	return (sigma > 0 || g < 0) && (sigma < H || g > 0);
 }
 
 /* sigma projected onto [0, H]. */

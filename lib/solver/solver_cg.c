@@ -138,6 +138,9 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	for (it = 0; ; it++) {
 		double gsum = 0, pen = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
 		double sum_t = 0, sum_s = 0, tau, tau_in, beta, rbar, t_max = 0;
+		double fit;	/* the level, copied into c: the passes below
+				 * then hold c in a register (an address taken
+				 * would make OpenMP share it by reference) */
 		size_t reentered = 0, clipped = 0, changed = 0, n_active = 0;
 
 		if (stale || (reentry && since_refresh >= REFRESH_EVERY)) {
@@ -146,7 +149,8 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			since_refresh = 0;
 		}
 		since_refresh++;
-		n_contact = in.level(s, &c);
+		n_contact = in.level(s, &fit);
+		c = fit;
 		if (n_contact == 0) {
 			/* Cannot happen with sum sigma = p N > 0; guard anyway. */
 			break;
@@ -188,7 +192,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				n_active++;
 				sum_gt += g * t[k];
 				sum_t += t[k];
-				if (fabs(t[k]) > t_max)
+				if (!reentry && fabs(t[k]) > t_max)
 					t_max = fabs(t[k]);
 			} else
 				t[k] = 0;
@@ -234,7 +238,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 #pragma omp parallel for reduction(+:sum_s, reentered, clipped, changed) \
     schedule(static)
 		for (k = 0; k < n; k++) {
-			double g = disp[k] + c - h[k], old = sigma[k], v;
+			double g = disp[k] + c - h[k], old = sigma[k], v = old;
 
 			disp[k] -= tau * r[k];	/* G sigma, if the step stays linear */
 			if (rc__active(old, g, H)) {
@@ -257,7 +261,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				}
 				sigma[k] = v;
 			}
-			sum_s += sigma[k];
+			sum_s += v;
 		}
 		if (reentry) {
 			/* the conjugate directions need whole line-search steps */
