@@ -172,10 +172,7 @@ cap_plastic_fraction(const rc_solver *s)
 void
 rc__cap(const rc_solver *s, rc__interaction *in)
 {
-	in->H = s->opts.hardness;
-	in->start = cap_start;
-	in->level = cap_level;
-	in->restore_load = cap_restore_load;
-	in->plastic_fraction = cap_plastic_fraction;
-	in->cg_reentry = 0;
+	*in = (rc__interaction){ .H = s->opts.hardness, .start = cap_start,
+	    .level = cap_level, .restore_load = cap_restore_load,
+	    .plastic_fraction = cap_plastic_fraction, .cg_reentry = 0 };
 }

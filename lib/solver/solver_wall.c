@@ -76,10 +76,7 @@ void
 rc__wall(const rc_solver *s, rc__interaction *in)
 {
 	(void)s;
-	in->H = HUGE_VAL;
-	in->start = rc__wall_start;
-	in->level = wall_level;
-	in->restore_load = wall_restore_load;
-	in->plastic_fraction = NULL;
-	in->cg_reentry = 1;
+	*in = (rc__interaction){ .H = HUGE_VAL, .start = rc__wall_start,
+	    .level = wall_level, .restore_load = wall_restore_load,
+	    .plastic_fraction = NULL, .cg_reentry = 1 };
 }
