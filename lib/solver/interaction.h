@@ -43,8 +43,9 @@ typedef struct rc__interaction {
 	int cg_reentry;
 } rc__interaction;
 
-/* The interaction of s's options (the cap when opts.hardness is
- * finite and positive, else the wall): solver_wall.c, solver_hardness.c. */
+/* The two interactions filled in for s: solver_wall.c, solver_hardness.c
+ * (rc__interaction_of, solver_impl.h, picks the cap when opts.hardness
+ * is finite and positive, else the wall). */
 void rc__wall(const struct rc_solver *s, rc__interaction *in);
 void rc__cap(const struct rc_solver *s, rc__interaction *in);
 
