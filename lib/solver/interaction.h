@@ -34,6 +34,9 @@ typedef struct rc__interaction {
 	 * Returns 1 if G sigma is now stale. */
 	int (*restore_load)(struct rc_solver *s, double p, double sum,
 	    double *disp);
+	/* the largest move of one pressure in one step of either method
+	 * (the cap's trust region, solver_hardness.c; +inf: the wall) */
+	double max_move;
 	/* its column of the solution: the fraction of the points at H
 	 * (a_plastic; rc_solver_plastic_fraction); NULL: none (the wall) */
 	double (*plastic_fraction)(const struct rc_solver *s);

@@ -69,9 +69,8 @@
  *     onto [0, H] (a step of tau <= 0 moves every such point by -g /
  *     G_00);
  *   - no damping; instead a trust region: no pressure moves by more than
- *     TRUST H in one step.  Without it, starting from a uniform p near H
- *     the step sent half the points to 0 and half to H and back (a
- *     two-cycle, 64^2 self-affine, p = H/2);
+ *     the interaction's max_move, H/2, in one step (solver_hardness.c
+ *     says why);
  *   - the load is restored by scaling down all pressures when they carry
  *     too much (this keeps them in [0, H]), or else by scaling up those
  *     of F, moving to H the points that would exceed it, until the mean
@@ -95,7 +94,6 @@
 #define PROGRESS_EVERY	50
 #define DAMP_DEC	0.5
 #define DAMP_INC	1.5
-#define TRUST	0.5
 
 int
 rc__cg_alloc(rc_solver *s, rc_err *err)
@@ -217,9 +215,9 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			prev_bound = bound;
 			tau *= damp;
 		}
-		/* The cap's trust region (no bound for H = +inf). */
-		if (tau * t_max > TRUST * H)
-			tau = TRUST * H / t_max;
+		/* The cap's trust region (the wall: no bound). */
+		if (tau * t_max > in.max_move)
+			tau = in.max_move / t_max;
 		/* The re-entry pressure -tau g needs tau > 0.  With the gap zero
 		 * on the whole contact set (one contact point, or a warm start
 		 * from a solution at a lower load) there is no step and tau = 0,

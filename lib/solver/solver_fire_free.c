@@ -44,10 +44,10 @@
  * < H), step 2's active set (the cap's adds the points at H whose gap is
  * open, g > 0: the force lowers them, and leaves out those at H with g <=
  * 0: the bound takes the force), step 5's bound (clamped into [0, H], v
- * = 0 where clamped; no point moves by more than H/2 in a step, see
- * TRUST) and its load restoration (the wall's one scale; the cap's scales
- * the pressures below H, with its fallback when they carry nothing), as
- * for the CG.  The stopping rule and measure are the CG's
+ * = 0 where clamped; no point moves by more than the interaction's
+ * max_move, H/2, in a step) and its load restoration (the wall's one
+ * scale; the cap's scales the pressures below H, with its fallback when
+ * they carry nothing), as for the CG.  The stopping rule and measure are the CG's
  * (rc__pressure_check through rc__cg_next: periodic, the residual
  * rms(p + K u' - sigma) / p; free, the gap bound), so both methods stop
  * at comparable accuracy.  The wall's rules are the cap's with H = +inf.
@@ -73,15 +73,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <fftw3.h>
-
-/* With a hardness, no pressure moves by more than TRUST H in one step (a
- * cap on each point's step, as the plastic CG's trust region): without
- * it, near p = H (128^2 self-affine, H = 0.2, p = 0.988 H) steps sent
- * every free point to a bound, the load restoration then spread the load
- * over all points and the iteration cycled (3000 iterations, residual
- * 0.6); with it 35.  TRUST 0.25 converged too, in 10-30 % more
- * iterations.  Without a hardness the cap is infinite: no effect. */
-#define TRUST	0.5
 
 /* FIRE's largest time step on pressures (solver_fire.c's RC_FIRE_DT_MAX,
  * 2, is for heights).  Why smaller: the mass K makes the frequency 1 for
@@ -215,7 +206,7 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	 * alone */
 	rc__interaction_of(s, &in);
 	H = in.H;
-	max_move = TRUST * H;
+	max_move = in.max_move;
 	in.start(s, p);
 	memset(v, 0, n * sizeof(double));
 	for (it = 0; ; it++) {

@@ -78,5 +78,6 @@ rc__wall(const rc_solver *s, rc__interaction *in)
 	(void)s;
 	*in = (rc__interaction){ .H = HUGE_VAL, .start = rc__wall_start,
 	    .level = wall_level, .restore_load = wall_restore_load,
+	    .max_move = HUGE_VAL,
 	    .plastic_fraction = NULL, .cg_reentry = 1 };
 }
