@@ -546,6 +546,10 @@ rc_grid_write_stream(const rc_grid *g, FILE *fp, enum rc_format fmt,
 {
 	int r;
 
+	if (g->x != NULL)	/* no format keeps the positions */
+		return rc_seterr(err, "a line scan not uniformly spaced (%zu "
+		    "positions) cannot be written as a grid; --uniform resamples "
+		    "it onto a uniform step", g->nx);
 	switch (fmt) {
 	case RC_FMT_SURF: r = rc__surf_write(g, fp, err); break;
 	case RC_FMT_NPY: r = rc__npy_write(g, fp, err); break;
