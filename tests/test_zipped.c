@@ -358,6 +358,18 @@ container(void)
 	    g->z[3] == 1 && g->lx == 4, "b: positions 0 1 2 2.5 3 4, height 1 "
 	    "at 2.5 (%s)", g ? "" : err.msg);
 	rc_grid_free(g);
+	/* meta.yml's size of b, a file without units, wins: 8 for its
+	 * span 4 doubles its positions */
+	snprintf(bad, sizeof(bad), "%s", meta);
+	p = strstr(bad, "size: [4.0]");
+	memcpy(p, "size: [8.0]", 11);
+	put_container(path, bad, "c.surf");
+	g = rc_grid_read(path, &o, &err);
+	test_true(g != NULL && g->x != NULL && g->lx == 8 && g->x[3] == 5 &&
+	    g->x[5] == 8 && g->ly == 8.0 / 5, "b sized 8 by meta.yml: "
+	    "positions doubled, mean step 8/5 (%s)", g ? "" : err.msg);
+	rc_grid_free(g);
+	put_container(path, meta, "c.surf");
 	o.channel = 0;
 	o.nonuniform = 0;
 	o.uniform = 1;
