@@ -18,8 +18,9 @@
  * other processes on the machine disturb far less than the wall time.
  * Two more method rows, cg-plastic and fire-plastic, solve with the pressure
  * capped at the hardness H = 4 p (gfmd-solve --hardness;
- * lib/solver/solver_cg_plastic.c, and FIRE on pressures,
- * lib/solver/solver_fire_free.c, on both boundary kinds): the cost of
+ * lib/solver/solver_cg.c and FIRE on pressures,
+ * lib/solver/solver_fire_free.c, on the cap of lib/solver/solver_hardness.c,
+ * both boundary kinds): the cost of
  * plasticity against the elastic rows of the same map (their a_r error is
  * against the elastic reference, so it shows the effect).
  * Two more, fire-layer and cg-layer, solve the same map on a bonded elastic

@@ -51,8 +51,9 @@ typedef struct rc_solver_opts {
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
 	 * 0 or +inf: no cap (the default).  Both methods, both boundary
 	 * kinds, a layer, displacement control; not with adhesion
-	 * (solver_cg_plastic.c; FIRE on pressures, solver_fire_free.c;
-	 * gfmd-solve(1) PLASTICITY). */
+	 * (the cap of solver_hardness.c, which solver_cg.c and FIRE on
+	 * pressures, solver_fire_free.c, run on; gfmd-solve(1)
+	 * PLASTICITY). */
 	double hardness;
 	/* An elastic layer of this thickness (lateral length units) on a
 	 * rigid substrate instead of the half space: k_q of layer.h.  0 with

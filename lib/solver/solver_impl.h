@@ -7,15 +7,17 @@
  *     solver_fire_adh_free.c (the adhesive solve on periodic and free
  *     boundaries);
  *   minimisers: solver_fire.c (FIRE in heights against the hard wall),
- *     solver_fire_free.c (FIRE on pressures), solver_cg.c,
- *     solver_cg_plastic.c (CG), solver_fire_adh_pass.c (FIRE in heights
- *     with an adhesive law);
+ *     solver_fire_free.c (FIRE on pressures), solver_cg.c (CG),
+ *     solver_fire_adh_pass.c (FIRE in heights with an adhesive law); the
+ *     pressure methods, CG and FIRE on pressures, are each one loop over
+ *     the interface of interaction.h;
  *   the FIRE loop in heights that the two FIRE-in-heights files run with
  *     their interaction's passes (solver_fire_loop.c, rc__fire_parts);
  *     the operator (solver_operator.c: G, FIRE's mass, the stiffness
- *     scale), the interactions (solver_wall.c: the hard wall of the
- *     pressure methods; solver_hardness.c: the hardness cap; adhesion.c:
- *     the adhesive laws) and the convergence measure (solver_measure.c);
+ *     scale), the interactions (of the pressure methods, interaction.h:
+ *     solver_wall.c, the hard wall; solver_hardness.c, the hardness cap;
+ *     and adhesion.c: the adhesive laws) and the convergence measure
+ *     (solver_measure.c, with the pressure methods' one check);
  *   below them elastic*.c, layer.c, love.c, fft.c. */
 #ifndef RC_SOLVER_IMPL_H
 #define RC_SOLVER_IMPL_H
@@ -25,6 +27,7 @@
 #include "elastic.h"
 #include "elastic_free.h"
 #include "solver.h"
+#include "interaction.h"
 
 /* Adhesion on free boundaries (solver_fire_adh_free.c): the state on the
  * padded 2nx x 2ny grid, whose operator is then s->el. */
@@ -154,64 +157,36 @@ void rc__adh_free_release(rc_solver *s);
 size_t rc__adh_free_bytes(const rc_solver *s);
 int rc__fire_adh_free_solve(rc_solver *s, const struct rc_adhesion *law,
     int control, double *p, double delta, rc_solve_result *res);
-/* The hard wall of the pressure methods (solver_wall.c): the rigid level
- * c = <h - G sigma> over {sigma > 0} (returns its size); on free
- * boundaries the convergence measure and the admissible u' from s->u =
- * G sigma (leaves u', the contact set, level and energy).  The stiffness
- * scale of that measure (solver_operator.c). */
-size_t rc__level(const rc_solver *s, double *c);
-double rc__final_check_free(rc_solver *s, double p);
-/* That measure, max(k_max rms(u' - u) / p, |<sigma> - p| / p), from the
- * sums over all points of (u' - u)^2, sigma and sigma u; sets the
- * elastic energy (1/2) <sigma u>.  Both CG variants and FIRE on
- * pressures (solver_wall.c). */
-double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
-    double sum_e);
-double rc__stiffness_max(const rc_solver *s);
-/* FIRE on pressures (solver_fire_free.c): free boundaries, and a
- * hardness on either boundary kind. */
+/* The pressure methods (the CG, solver_cg.c, one loop for the wall and
+ * the cap; FIRE on pressures, solver_fire_free.c: free boundaries, and a
+ * hardness on either boundary kind) run on the interaction of s
+ * (interaction.h): the cap with a hardness, else the wall. */
+static inline void
+rc__interaction_of(const rc_solver *s, rc__interaction *in)
+{
+	if (rc_solver_opts_plastic(&s->opts))
+		rc__cap(s, in);
+	else
+		rc__wall(s, in);
+}
 int rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
 /* The operator (solver_operator.c): out = G x; G_00 of the periodic
- * compliance.  The start pressure of mean p (unbounded) of both pressure
- * methods (solver_wall.c). */
+ * compliance; the stiffness scale of the free boundaries' measure. */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
-void rc__cg_initial_pressure(rc_solver *s, double p);
-/* The stopping rule of the pressure methods (solver_measure.c: both CG
- * variants and FIRE on pressures), after iteration it
- * has its gap bound: STOP (the final check ran: *residual, and *status 0
- * if it met opts.tol), STALE (a periodic check of the residual itself
- * ran and missed: the iterate must be recomputed) or GO. */
+double rc__stiffness_max(const rc_solver *s);
+/* The wall's start pressure (solver_wall.c), which the cap's clips. */
+void rc__wall_start(rc_solver *s, double p);
+/* The stopping rule of the pressure methods (solver_measure.c), after
+ * iteration it has its gap bound: STOP (rc__pressure_check ran:
+ * *residual, and *status 0 if it met opts.tol), STALE (recheck: a
+ * periodic check of the residual itself ran and missed: the iterate must
+ * be recomputed) or GO. */
 enum { RC__CG_GO, RC__CG_STOP, RC__CG_STALE };
-int rc__cg_next(rc_solver *s, double p, double bound, long it,
-    double (*check)(rc_solver *, double), double *residual, int *status);
-/* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
-int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
-    rc_err *err);
-/* The hardness cap (solver_hardness.c), shared by that CG and FIRE on
- * pressures with a hardness (solver_fire_free.c): the level c fitted over
- * 0 < sigma < H (returns the count of sigma > 0); the load restored to
- * mean p within [0, H] (disp: G sigma kept in step, or NULL; returns 1 if
- * G sigma is stale); the convergence measure of (u', sigma) from s->u =
- * G sigma (leaves u', the contact set, level and energy). */
-size_t rc__plastic_level(const rc_solver *s, double *c);
-int rc__plastic_restore_load(rc_solver *s, double p, double *disp);
-double rc__plastic_check(rc_solver *s, double p);
-/* The start of both: the CG's (rc__cg_initial_pressure) clipped at H,
- * the load restored. */
-void rc__plastic_initial_pressure(rc_solver *s, double p);
-
-/* Whether a point with pressure sigma and gap g takes part in a bounded
- * step: free (0 < sigma < H), or its force f = -g pointing into the box
- * (at zero and penetrating, or at H with an open gap). */
-static inline int
-rc__plastic_active(double sigma, double g, double H)
-{
-	return (sigma > 0 && sigma < H) || (sigma <= 0 && g < 0) ||
-	    (sigma >= H && g > 0);
-}
+int rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
+    double bound, long it, int recheck, double *residual, int *status);
 
 /* FIRE's parameters, shared by its two loops (solver_fire_loop.c, which
  * says what each is and how it was tuned, in heights; solver_fire_free.c
