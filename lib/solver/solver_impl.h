@@ -261,7 +261,8 @@ rc__fire_mass0(double k_min, double n_contact, double points)
  * process's; the sums the loop completes over a distributed operator's
  * ranks); after each pass a hook sees the sums over the grid:
  *   force (x = f holding K u): f_eff = -(p + K u - the interaction's
- *     traction) into f, a = 0 on the contact set it marks; forced fills
+ *     traction) into f, and the contact set C (held by the wall: the
+ *     loop's a = 0 there) into contact; forced fills
  *     the report (the residual, the power f_eff . v, the contact count,
  *     the mean mode's mass for this step, whether to halt);
  *   mixing (the loop's own, x = a = M^-1 f_eff): |a|^2, a.v, |v|^2
