@@ -212,7 +212,7 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	 * cannot hold it (the blocked path, no mass table) */
 	rc__fire_parts pt = { &s->el, s->n, POINTS(s), s->u, s->sigma,
 	    s->fire_vel, s->contact, &w, CHUNK, 1, 0, wall_range,
-	    update_range, wall_forced, NULL, NULL };
+	    update_range, wall_forced, NULL, NULL, NULL, NULL, NULL, NULL };
 	int status;
 
 	(void)err;

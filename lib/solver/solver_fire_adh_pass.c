@@ -199,10 +199,11 @@ adh_forced(void *ctx, const double *sum, double gmin, rc__fire_report *r)
 
 /* Displacement control: the step's mean over F removed from the sums. */
 static void
-adh_mixed(void *ctx, double *sum)
+adh_mixed(void *ctx, double *sum, double *dt)
 {
 	struct adh *ad = ctx;
 
+	(void)dt;
 	ad->shift = 0;
 	if (ad->control == RC__ADH_LEVEL && ad->nf > 0) {
 		ad->shift = sum[3] / ad->nf;
@@ -275,7 +276,8 @@ rc__adh_relax(const rc__adh_view *w, const rc_adhesion *law, int control,
 	struct adh ad = { w, law, control, *pp, target, 0, 0 };
 	rc__fire_parts pt = { w->el, w->n, w->n_act, w->u, w->f, w->v,
 	    w->contact, &ad, 0, 0, control == RC__ADH_LEVEL, adh_range,
-	    adh_update_range, adh_forced, adh_mixed, adh_updated };
+	    adh_update_range, adh_forced, adh_mixed, adh_updated, NULL, NULL,
+	    NULL, NULL };
 	size_t n = w->n, k;
 	int status;
 

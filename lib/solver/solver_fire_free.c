@@ -38,6 +38,9 @@
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).
+ * The iteration is FIRE's one loop (rc__fire_run, solver_fire_loop.c):
+ * steps 1 and 3 its operator callbacks, 2 and 5 passes over each thread's
+ * share of the points, step 4's rules and the load in its hooks.
  * The interaction (interaction.h: the wall, or with opts.hardness H the
  * cap, perfect plasticity, the same minimisation over the box 0 <= sigma
  * <= H) gives the start, step 1's level (the cap's fitted over 0 < sigma
@@ -147,164 +150,258 @@ struct step_bound {
  * iteration before) and on = |A|. */
 static void
 step_bound_update(struct step_bound *b, double num, double den,
-    size_t changed, size_t flipped, size_t on)
+    double changed, double flipped, double on)
 {
-	if ((double)flipped > FLIP_FRACTION * (double)on)
+	if (flipped > FLIP_FRACTION * on)
 		b->dt_flip *= RC_FIRE_F_DEC;
 	else
 		b->dt_flip = fmin(SIGMA_DT_MAX, b->dt_flip * RC_FIRE_F_INC);
-	if (num > 0 && den > 0 && (double)changed <= SET_STABLE * (double)on)
+	if (num > 0 && den > 0 && changed <= SET_STABLE * on)
 		b->lambda = fmax(num / den, LAMBDA_DECAY * b->lambda);
 	b->dt_max = b->lambda > 0 ?
 	    fmin(b->dt_flip, STEP_SAFETY / sqrt(b->lambda)) : b->dt_flip;
 }
 
-/* a = K f (mean mode 0) into the periodic operator's real buffer. */
+/* The pressures' side of the FIRE loop (rc__fire_run): the state, the
+ * interaction, this iteration's level and active set, the step bound. */
+struct sigma_fire {
+	rc_solver *s;
+	rc__interaction in;
+	double p, k_max;
+	double c;		/* the rigid level of this iteration */
+	double on;		/* |A|, from the level fit */
+	long it;
+	struct step_bound bound;
+	/* the previous iteration's pressures, forces (0: off A) and
+	 * accelerations, and whether each point was in A the iteration
+	 * before that (the rules of STEP_SAFETY and FLIP_FRACTION) */
+	double *s_prev, *f_prev, *a_prev;
+	unsigned char *was_active;
+};
+
+/* Step 1: u = G sigma and the level c; the force pass writes f into
+ * s->scratch. */
 static double *
-stiffness_times(rc_solver *s, const double *f)
+sigma_field(void *ctx)
 {
-	rc_elastic *e = &s->el;
+	struct sigma_fire *sf = ctx;
+	rc_solver *s = sf->s;
+
+	rc__compliance(s, s->sigma, s->u);
+	sf->on = (double)sf->in.level(s, &sf->c);
+	return s->scratch;
+}
+
+/* Step 2 on k0 <= k < k1: f = -g on A, else 0; adds |f|^2 and the power
+ * f.v to sum[0..1]. */
+static void
+sigma_force_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
+    size_t k1, double *sum, double *least)
+{
+	const struct sigma_fire *sf = ctx;
+	const rc_solver *s = sf->s;
+	const double *u = s->u, *h = s->height, *sigma = s->sigma;
+	const double *v = s->fire_vel;
+	double c = sf->c, H = sf->in.H, ff = 0, power = 0;
+	size_t k;
+
+	(void)st;
+	(void)least;
+	for (k = k0; k < k1; k++) {
+		double g = u[k] + c - h[k];
+
+		f[k] = rc__active(sigma[k], g, H) ? -g : 0;
+		ff += f[k] * f[k];
+		power += f[k] * v[k];
+	}
+	sum[0] += ff;
+	sum[1] += power;
+}
+
+/* The report: the free-boundary measure k_max rms(f) / p (the stopping
+ * rule's bound and the progress report's residual), the power, |A|, the
+ * largest step of the rules above. */
+static void
+sigma_forced(void *ctx, const double *sum, double least, rc__fire_report *r)
+{
+	const struct sigma_fire *sf = ctx;
+
+	(void)least;
+	r->residual = sf->k_max * sqrt(sum[0] / (double)sf->s->n) / sf->p;
+	r->power = sum[1];
+	r->contact = sf->on;
+	r->dt_max = sf->bound.dt_max;
+}
+
+/* The pressure methods' stopping rule; free: the check is the bound
+ * itself, so it runs only at the end.  STALE: the check left u' in u,
+ * which the loop recomputes. */
+static int
+sigma_next(void *ctx, long it, double bound, double *residual, int *status)
+{
+	struct sigma_fire *sf = ctx;
+
+	sf->it = it;
+	return rc__cg_next(sf->s, &sf->in, sf->p, bound, it, !sf->s->free_bc,
+	    residual, status);
+}
+
+/* Step 3: a = K f (mean mode 0) into the periodic operator's real
+ * buffer. */
+static double *
+sigma_accelerate(void *ctx, double *f)
+{
+	rc_elastic *e = &((struct sigma_fire *)ctx)->s->el;
 
 	rc_elastic_force(e, f, e->fft.real);
 	return e->fft.real;
 }
 
-/* Long: the FIRE iteration on pressures, its passes sharing their sums
- * as in solver_fire_loop.c. */
+/* The mixing pass on k0 <= k < k1: a = 0 off A, v = 0 on a restart
+ * (written: the update reads them); adds |a|^2, a.v, |v|^2 to sum[0..2]
+ * and the rules' sums num, den, changed, flipped to sum[3..6]; moves the
+ * forces and accelerations to f_prev and a_prev. */
+static void
+sigma_mixing_range(void *ctx, double *a, const rc__fire_step *st,
+    size_t k0, size_t k1, double *sum, double *least)
+{
+	const struct sigma_fire *sf = ctx;
+	const rc_solver *s = sf->s;
+	const double *f = s->scratch, *sigma = s->sigma, *s_prev = sf->s_prev;
+	double *v = s->fire_vel, *f_prev = sf->f_prev, *a_prev = sf->a_prev;
+	unsigned char *was_active = sf->was_active;
+	double aa = 0, av = 0, vv = 0, num = 0, den = 0;
+	size_t k, changed = 0, flipped = 0;
+	int restart = st->restart;
+
+	(void)least;
+	for (k = k0; k < k1; k++) {
+		int now = f[k] != 0, before = f_prev[k] != 0;
+
+		if (!now)
+			a[k] = 0;
+		if (restart)
+			v[k] = 0;
+		if (now && before) {
+			double df = f[k] - f_prev[k];
+
+			num += df * (a[k] - a_prev[k]);
+			den -= df * (sigma[k] - s_prev[k]);
+		}
+		changed += now != before;
+		flipped += now != before && before != was_active[k];
+		was_active[k] = (unsigned char)before;
+		f_prev[k] = f[k];
+		a_prev[k] = a[k];
+		aa += a[k] * a[k];
+		av += a[k] * v[k];
+		vv += v[k] * v[k];
+	}
+	sum[0] += aa;
+	sum[1] += av;
+	sum[2] += vv;
+	sum[3] += num;
+	sum[4] += den;
+	sum[5] += (double)changed;
+	sum[6] += (double)flipped;
+}
+
+/* After the mixing pass: the rules' bound, and the step within it (the
+ * first two iterations keep FIRE's start). */
+static void
+sigma_mixed(void *ctx, double *sum, double *dt)
+{
+	struct sigma_fire *sf = ctx;
+
+	if (sf->it > 0)
+		step_bound_update(&sf->bound, sum[3], sum[4], sum[5], sum[6],
+		    sf->on);
+	if (sf->it >= 2)
+		*dt = fmin(*dt, sf->bound.dt_max);
+}
+
+/* Step 5 on k0 <= k < k1: sigma += dt v' within max_move a point, clamped
+ * into [0, H] (v = 0 there); the new pressures' sum to sum[0]. */
+static void
+sigma_update_range(void *ctx, double *a, const rc__fire_step *st,
+    size_t k0, size_t k1, double *sum, double *least)
+{
+	const struct sigma_fire *sf = ctx;
+	rc_solver *s = sf->s;
+	double *sigma = s->sigma, *v = s->fire_vel, *s_prev = sf->s_prev;
+	double dt = st->dt, mix_v = st->mix_v, mix_a = st->mix_a;
+	double H = sf->in.H, max_move = sf->in.max_move, total = 0;
+	size_t k;
+
+	(void)least;
+	for (k = k0; k < k1; k++) {
+		double vk = mix_v * (v[k] + dt * a[k]) + mix_a * a[k];
+		double sk;
+
+		s_prev[k] = sigma[k];
+		if (fabs(dt * vk) > max_move)
+			vk = copysign(max_move / dt, vk);
+		sk = sigma[k] + dt * vk;
+
+		if (sk <= 0) {
+			sk = 0;
+			vk = 0;
+		} else if (sk >= H) {
+			sk = H;
+			vk = 0;
+		}
+		sigma[k] = sk;
+		v[k] = vk;
+		total += sk;
+	}
+	sum[0] += total;
+}
+
+/* The load restored from the update's sum. */
+static void
+sigma_updated(void *ctx, const double *sum)
+{
+	struct sigma_fire *sf = ctx;
+
+	sf->in.restore_load(sf->s, sf->p, sum[0], NULL);
+}
+
 int
 rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
-	size_t n = s->n, k;
-	/* the start at solver_fire_loop.c's 1, stable while all points are
-	 * active (the start: uniform pressure), as measured below */
-	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
-	double residual = HUGE_VAL;
-	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
-	double k_max = rc__stiffness_max(s);
-	const double *h = s->height;
+	size_t n = s->n;
 	unsigned long small0 = s->el.n_r2c + s->el.n_c2r;
-	rc__interaction in;
-	double H, max_move;
-	long it, npos = 0;
-	int status = 1, next;
-	struct step_bound bound = { 0, SIGMA_DT_MAX, SIGMA_DT_MAX };
-	/* the previous iteration's pressures, forces (0: off A) and
-	 * accelerations, and whether each point was in A the iteration
-	 * before that (the rules of STEP_SAFETY and FLIP_FRACTION) */
+	struct sigma_fire sf = { .s = s, .p = p,
+	    .k_max = rc__stiffness_max(s),
+	    .bound = { 0, SIGMA_DT_MAX, SIGMA_DT_MAX } };
+	/* FIRE's start at solver_fire_loop.c's 1, stable while all points
+	 * are active (the start: uniform pressure), as measured above;
+	 * one range a thread, the sums of a `parallel for' */
+	rc__fire_parts pt = { &s->el, n, (double)n, s->u, s->scratch,
+	    s->fire_vel, NULL, &sf, 0, 0, 0, sigma_force_range,
+	    sigma_update_range, sigma_forced, sigma_mixed, sigma_updated,
+	    sigma_field, sigma_accelerate, sigma_mixing_range, sigma_next };
 	double *prev = fftw_alloc_real(3 * n);
-	double *s_prev = prev, *f_prev = prev + n, *a_prev = prev + 2 * n;
-	unsigned char *was_active = calloc(n, 1);
+	int status;
 
-	if (prev == NULL || was_active == NULL) {
+	sf.was_active = calloc(n, 1);
+	if (prev == NULL || sf.was_active == NULL) {
 		fftw_free(prev);
-		free(was_active);
+		free(sf.was_active);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of "
 		    "FIRE buffers)", n * (3 * sizeof(double) + 1));
 	}
 	memset(prev, 0, 3 * n * sizeof(double));
-	/* the wall: H = +inf, and the rules below are those of sigma >= 0
+	sf.s_prev = prev;
+	sf.f_prev = prev + n;
+	sf.a_prev = prev + 2 * n;
+	/* the wall: H = +inf, and the rules above are those of sigma >= 0
 	 * alone */
-	rc__interaction_of(s, &in);
-	H = in.H;
-	max_move = in.max_move;
-	in.start(s, p);
-	memset(v, 0, n * sizeof(double));
-	for (it = 0; ; it++) {
-		double c, ff = 0, power = 0, aa = 0, av = 0, vv = 0, sum = 0;
-		double mix_v = 1, mix_a = 0, *a, num = 0, den = 0;
-		size_t on, changed = 0, flipped = 0;
-		int restart;
-
-		rc__compliance(s, sigma, u);
-		on = in.level(s, &c);
-#pragma omp parallel for reduction(+:ff, power) schedule(static)
-		for (k = 0; k < n; k++) {
-			double g = u[k] + c - h[k];
-
-			f[k] = rc__active(sigma[k], g, H) ? -g : 0;
-			ff += f[k] * f[k];
-			power += f[k] * v[k];
-		}
-		/* free: the check is the bound itself, so it runs only at
-		 * the end */
-		next = rc__cg_next(s, &in, p, k_max * sqrt(ff / (double)n) / p,
-		    it, !s->free_bc, &residual, &status);
-		if (next == RC__CG_STOP)
-			break;
-		if (next == RC__CG_STALE)
-			continue;	/* the check left u' in u: recompute */
-		if (s->opts.progress && it % RC_FIRE_PROGRESS_EVERY == 0)
-			s->opts.progress(s->opts.progress_ctx, it,
-			    k_max * sqrt(ff / (double)n) / p, (double)on / (double)n);
-		a = stiffness_times(s, f);
-		restart = !(power > 0);
-		if (!restart) {
-			if (++npos > RC_FIRE_N_MIN) {
-				dt = fmin(dt * RC_FIRE_F_INC, bound.dt_max);
-				alpha *= RC_FIRE_F_ALPHA;
-			}
-		} else {
-			npos = 0;
-			dt *= RC_FIRE_F_DEC;
-			alpha = RC_FIRE_ALPHA_START;
-		}
-#pragma omp parallel for reduction(+:aa, av, vv, num, den, changed, \
-    flipped) schedule(static)
-		for (k = 0; k < n; k++) {
-			int now = f[k] != 0, before = f_prev[k] != 0;
-
-			if (!now)
-				a[k] = 0;
-			if (restart)
-				v[k] = 0;
-			if (now && before) {
-				double df = f[k] - f_prev[k];
-
-				num += df * (a[k] - a_prev[k]);
-				den -= df * (sigma[k] - s_prev[k]);
-			}
-			changed += now != before;
-			flipped += now != before && before != was_active[k];
-			was_active[k] = (unsigned char)before;
-			f_prev[k] = f[k];
-			a_prev[k] = a[k];
-			aa += a[k] * a[k];
-			av += a[k] * v[k];
-			vv += v[k] * v[k];
-		}
-		if (it > 0)
-			step_bound_update(&bound, num, den, changed, flipped, on);
-		if (it >= 2)
-			dt = fmin(dt, bound.dt_max);
-		if (aa > 0) {
-			double vn2 = vv + 2 * dt * av + dt * dt * aa;
-
-			mix_v = 1 - alpha;
-			mix_a = alpha * sqrt(vn2 / aa);
-		}
-#pragma omp parallel for reduction(+:sum) schedule(static)
-		for (k = 0; k < n; k++) {
-			double vk = mix_v * (v[k] + dt * a[k]) + mix_a * a[k];
-			double sk;
-
-			s_prev[k] = sigma[k];
-			if (fabs(dt * vk) > max_move)
-				vk = copysign(max_move / dt, vk);
-			sk = sigma[k] + dt * vk;
-
-			if (sk <= 0) {
-				sk = 0;
-				vk = 0;
-			} else if (sk >= H) {
-				sk = H;
-				vk = 0;
-			}
-			sigma[k] = sk;
-			v[k] = vk;
-			sum += sk;
-		}
-		in.restore_load(s, p, sum, NULL);
-	}
+	rc__interaction_of(s, &sf.in);
+	sf.in.start(s, p);
+	memset(s->fire_vel, 0, n * sizeof(double));
+	status = rc__fire_run(&pt, &s->opts, &s->watch, &res->iterations,
+	    &res->residual);
 	/* Free: fft_pairs in padded pairs (solver.c counts those), the
 	 * unpadded pairs as a quarter each.  Periodic: both operators are
 	 * s->el's, which solver.c counts. */
@@ -312,8 +409,6 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		res->fft_pairs = 0.25 * 0.5 *
 		    (double)(s->el.n_r2c + s->el.n_c2r - small0);
 	fftw_free(prev);
-	free(was_active);
-	res->iterations = it;
-	res->residual = residual;
+	free(sf.was_active);
 	return status;
 }

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_fire_loop.c - the FIRE loop in surface heights, written once for
- * every operator and interaction: FIRE-GFMD, mass-weighted damped
+/* solver_fire_loop.c - the FIRE loop, written once for every operator
+ * and interaction, in surface heights and on pressures (solver_fire_free.c
+ * brings its operator, passes and step rules: see the end of this
+ * comment).  In heights: FIRE-GFMD, mass-weighted damped
  * dynamics of the elastic surface heights u(r), relaxed with FIRE
  * (Bitzek et al. 2006, in the FIRE 2.0 ordering of Guenole et al. 2020:
  * mix after the velocity update), with Fourier masses m_q proportional to
@@ -67,6 +69,17 @@
  * one pair: step 3 needs f_eff, which needs K u of this step at the
  * contact points; tracking K u by linearity instead needs K of the sparse
  * wall corrections (a on C, the projection), again a full transform.
+ *
+ * On pressures (solver_fire_free.c says what and why): the same loop
+ * with the operator's two callbacks, field (u = G sigma and the level;
+ * f is then the force pass's own) and accelerate (a = K f, in place of
+ * step 3), the interaction's own mixing pass (it zeroes a off the active
+ * set and v on a restart, and sums what its step rules need), its
+ * largest step in the report (the adapt's limit) and in the mixed hook
+ * (it may lower dt), the load's restoration in the updated hook, and its
+ * stopping rule (rc__cg_next) through next in place of the loop's.  No
+ * mass table, no blocked path (fuse 0); ranges of one thread's share
+ * (grain 0), the sums of the `parallel for' loops it had before.
  */
 #include "solver_impl.h"
 
@@ -117,10 +130,6 @@ struct fire_op {
 	rc_fft_multiplier stiff, mass;
 };
 
-/* A pass over the grid with its sums: x the field it reads (f or a). */
-typedef void pass_fn(void *ctx, double *x, const rc__fire_step *st,
-    size_t k0, size_t k1, double *sum, double *least);
-
 /* The point range of this thread's share of n points: the partition of
  * OpenMP's static schedule (GCC's: the first n mod T threads take one
  * more), so that a pass keeps the sums of a `parallel for` over points. */
@@ -145,8 +154,8 @@ thread_share(size_t n, size_t *k0, size_t *k1)
 
 /* A pass on the plain path, in the interaction's ranges. */
 static void
-run_pass(const rc__fire_parts *pt, pass_fn *pass, void *ctx, double *x,
-    const rc__fire_step *st, double *sum, double *least)
+run_pass(const rc__fire_parts *pt, rc__fire_pass *pass, void *ctx,
+    double *x, const rc__fire_step *st, double *sum, double *least)
 {
 	size_t n = pt->n, g = pt->grain, b, nb = g > 0 ? (n + g - 1) / g : 0;
 	double s[RC__FIRE_SUMS] = { 0 }, lo = HUGE_VAL;
@@ -229,7 +238,10 @@ stage_force(struct fire_op *op, double *sum, double *least)
 	double s[RC__FIRE_SUMS] = { 0 }, lo = HUGE_VAL;
 
 	if (!op->blocked) {
-		rc_elastic_force(op->e, pt->u, op->f);
+		if (pt->field != NULL)
+			op->f = pt->field(pt->ctx);
+		else
+			rc_elastic_force(op->e, pt->u, op->f);
 		run_pass(pt, pt->force, pt->ctx, op->f, NULL, sum, least);
 		return;
 	}
@@ -268,11 +280,17 @@ stage_weigh(struct fire_op *op, double mass0, const rc__fire_step *st,
 	if (op->table != NULL)
 		op->table[0] = op->mass.at_zero;
 	if (!op->blocked) {
-		if (op->table != NULL)
+		if (pt->accelerate != NULL)
+			a = pt->accelerate(pt->ctx, op->f);
+		else if (op->table != NULL)
 			rc_elastic_convolve(e, op->f, a, &op->mass);
 		else
 			a = rc__fire_mass_weighted(e, op->f, mass0);
-		run_pass(pt, mixing_range, (void *)pt, a, st, sum, &lo);
+		if (pt->mixing != NULL)
+			run_pass(pt, pt->mixing, pt->ctx, a, st, sum, &lo);
+		else
+			run_pass(pt, mixing_range, (void *)pt, a, st, sum,
+			    &lo);
 		return a;
 	}
 	/* the columns, then the c2r of a and the sums block by block */
@@ -339,7 +357,7 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 	/* never a distributed operator (no blocked transforms there) */
 	op.blocked = pt->fuse && rc_fft_conv_blocked(f);
 	op.inv_n = 1.0 / (double)e->n;
-	op.table = mass_table(e, op.inv_n);
+	op.table = pt->accelerate != NULL ? NULL : mass_table(e, op.inv_n);
 	/* plain, with the table: K u, f_eff and a one grid, the operator's
 	 * real buffer (a separate force would be a fourth grid through the
 	 * cache each iteration); blocked: the force in pt->f, a in the
@@ -356,33 +374,46 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 			rc_fft_rows_r2c(f, pt->u, b);
 	for (it = 0; ; it++) {
 		double sum[RC__FIRE_SUMS], least, *a;
-		rc__fire_report r = { HUGE_VAL, 0, 0, 1, 0 };
+		rc__fire_report r = { HUGE_VAL, 0, 0, 1, 0, RC_FIRE_DT_MAX };
 
 		stage_force(&op, sum, &least);
 		rc_elastic_sum(e, sum, RC__FIRE_SUMS);
 		pt->forced(pt->ctx, sum, least, &r);
-		*residual = r.residual;
-		if (r.residual <= opts->tol) {
-			status = 0;
-			break;
+		if (pt->next != NULL) {
+			int next = pt->next(pt->ctx, it, r.residual, residual,
+			    &status);
+
+			if (next == RC__CG_STOP)
+				break;
+			if (next == RC__CG_STALE)
+				continue;
+		} else {
+			*residual = r.residual;
+			if (r.residual <= opts->tol) {
+				status = 0;
+				break;
+			}
+			if (r.halt) {
+				status = RC__FIRE_HALTED;
+				break;
+			}
+			if (it >= opts->max_iter ||
+			    (opts->stop && *opts->stop) ||
+			    rc__watch_stalled(watch, opts->stall_window, it,
+			    r.residual))
+				break;
 		}
-		if (r.halt) {
-			status = RC__FIRE_HALTED;
-			break;
-		}
-		if (it >= opts->max_iter || (opts->stop && *opts->stop) ||
-		    rc__watch_stalled(watch, opts->stall_window, it,
-		    r.residual))
-			break;
 		if (opts->progress && it % RC_FIRE_PROGRESS_EVERY == 0)
 			opts->progress(opts->progress_ctx, it, r.residual,
 			    r.contact / pt->points);
-		st.restart = rc__fire_adapt(&fs, r.power, RC_FIRE_DT_MAX);
+		st.restart = rc__fire_adapt(&fs, r.power, r.dt_max);
 		st.dt = fs.dt;
 		a = stage_weigh(&op, r.mass0, &st, sum);
 		rc_elastic_sum(e, sum, RC__FIRE_SUMS);
-		if (pt->mixed != NULL)
-			pt->mixed(pt->ctx, sum);
+		if (pt->mixed != NULL) {
+			pt->mixed(pt->ctx, sum, &fs.dt);
+			st.dt = fs.dt;
+		}
 		rc__fire_mix(&fs, sum[0], sum[1], sum[2], &st.mix_v, &st.mix_a);
 		stage_update(&op, a, &st, sum);
 		if (pt->updated != NULL) {

@@ -9,10 +9,11 @@
  *   minimisers: solver_fire.c (FIRE in heights against the hard wall),
  *     solver_fire_free.c (FIRE on pressures), solver_cg.c (CG),
  *     solver_fire_adh_pass.c (FIRE in heights with an adhesive law); the
- *     pressure methods, CG and FIRE on pressures, are each one loop over
- *     the interface of interaction.h;
- *   the FIRE loop in heights that the two FIRE-in-heights files run with
- *     their interaction's passes (solver_fire_loop.c, rc__fire_parts);
+ *     pressure methods, CG and FIRE on pressures, run on the interface of
+ *     interaction.h;
+ *   the FIRE loop that the three FIRE files run with their passes and
+ *     hooks (solver_fire_loop.c, rc__fire_parts; on pressures with its
+ *     operator's callbacks too);
  *     the operator (solver_operator.c: G, FIRE's mass, the stiffness
  *     scale), the interactions (of the pressure methods, interaction.h:
  *     solver_wall.c, the hard wall; solver_hardness.c, the hardness cap;
@@ -253,22 +254,25 @@ rc__fire_mass0(double k_min, double n_contact, double points)
 	    sqrt((n_contact > 0 ? n_contact : 1) / points);
 }
 
-/* The FIRE loop in heights (solver_fire_loop.c), over an operator (an
- * rc_elastic: K and the mass-weighting M^-1, m_q = k_q) and an
- * interaction given as passes.  A pass runs over the points
+/* The FIRE loop (solver_fire_loop.c), in heights and on pressures, over
+ * an operator (by default an rc_elastic: K and the mass-weighting M^-1,
+ * m_q = k_q; else the field and accelerate callbacks) and an interaction
+ * given as passes.  A pass runs over the points
  * k0 <= k < k1 (called once per range of points: never per point) and
  * adds its sums to sum[0 .. RC__FIRE_SUMS-1] and lowers *least (this
  * process's; the sums the loop completes over a distributed operator's
  * ranks); after each pass a hook sees the sums over the grid:
- *   force (x = f holding K u): f_eff = -(p + K u - the interaction's
- *     traction) into f, and the contact set C (held by the wall: the
- *     loop's a = 0 there) into contact; forced fills
+ *   force (x = f holding K u, or field's): f_eff = -(p + K u - the
+ *     interaction's traction) into f, and the contact set C (held by the
+ *     wall: the loop's a = 0 there) into contact; forced fills
  *     the report (the residual, the power f_eff . v, the contact count,
- *     the mean mode's mass for this step, whether to halt);
- *   mixing (the loop's own, x = a = M^-1 f_eff): |a|^2, a.v, |v|^2
- *     into sum[0..2] with a = 0 on C and v = 0 on a restart; with
- *     mean_sums the sums of a and v into sum[3..4]; mixed (may be NULL)
- *     makes the first three those of the step the update takes;
+ *     the mean mode's mass for this step, the largest step, whether to
+ *     halt);
+ *   mixing (the loop's own, or the interaction's when set; x = a =
+ *     M^-1 f_eff): |a|^2, a.v, |v|^2 into sum[0..2] with a = 0 on C and
+ *     v = 0 on a restart; with mean_sums the sums of a and v into
+ *     sum[3..4]; mixed (may be NULL) makes the first three those of the
+ *     step the update takes and may lower the step *dt;
  *   update (x = a): v' = mix_v (v + dt a) + mix_a a, u += dt v', the
  *     clamp at h; updated (may be NULL) follows it.
  * The plain path runs a pass on chunks of grain points, or with grain 0
@@ -276,8 +280,13 @@ rc__fire_mass0(double k_min, double n_contact, double points)
  * is set, on each block of rows between its row transforms (the update
  * must then leave u final: no updated hook).  Returns 0 converged
  * (residual <= opts.tol), RC__FIRE_HALTED (the report's halt), else 1
- * (out of iterations, stopped, stalled); *iterations, *residual. */
-#define RC__FIRE_SUMS	6
+ * (out of iterations, stopped, stalled); *iterations, *residual.
+ * FIRE on pressures (solver_fire_free.c) brings its operator: field
+ * (u = G sigma and the level; returns the grid the force pass writes f
+ * into) and accelerate (a = K f; returns a), its mixing pass, and next,
+ * its stopping rule in place of the loop's (rc__cg_next's GO, STOP,
+ * STALE: from the report's residual, sets *residual and *status). */
+#define RC__FIRE_SUMS	7
 enum { RC__FIRE_HALTED = 2 };
 typedef struct rc__fire_step {
 	double dt;
@@ -290,7 +299,10 @@ typedef struct rc__fire_report {
 	double contact;		/* points in contact */
 	double mass0;		/* the mean mode's mass of this step */
 	int halt;		/* end the solve before this step */
+	double dt_max;		/* the largest step (RC_FIRE_DT_MAX) */
 } rc__fire_report;
+typedef void rc__fire_pass(void *ctx, double *x, const rc__fire_step *st,
+    size_t k0, size_t k1, double *sum, double *least);
 typedef struct rc__fire_parts {
 	rc_elastic *el;		/* the operator */
 	size_t n;		/* its points (this process's) */
@@ -305,14 +317,17 @@ typedef struct rc__fire_parts {
 	size_t grain;
 	int fuse;
 	int mean_sums;
-	void (*force)(void *ctx, double *x, const rc__fire_step *st,
-	    size_t k0, size_t k1, double *sum, double *least);
-	void (*update)(void *ctx, double *x, const rc__fire_step *st,
-	    size_t k0, size_t k1, double *sum, double *least);
+	rc__fire_pass *force, *update;
 	void (*forced)(void *ctx, const double *sum, double least,
 	    rc__fire_report *r);
-	void (*mixed)(void *ctx, double *sum);
+	void (*mixed)(void *ctx, double *sum, double *dt);
 	void (*updated)(void *ctx, const double *sum);
+	/* NULL but on pressures (see above) */
+	double *(*field)(void *ctx);
+	double *(*accelerate)(void *ctx, double *f);
+	rc__fire_pass *mixing;
+	int (*next)(void *ctx, long it, double bound, double *residual,
+	    int *status);
 } rc__fire_parts;
 int rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
     rc__watch *watch, long *iterations, double *residual);
