@@ -36,14 +36,27 @@ env_threads(void)
 }
 
 int
-rc_fft_set_threads(int n)
+rc_fft_thread_count(int n)
 {
 #ifdef _OPENMP
-	static int initialised;	/* FFTW's own global state: init once */
 	if (n <= 0)
 		n = env_threads();
 	if (n <= 0)
 		n = rc_threads_auto();
+	return n;
+#else
+	(void)n;
+	(void)env_threads;
+	return 1;
+#endif
+}
+
+int
+rc_fft_set_threads(int n)
+{
+#ifdef _OPENMP
+	static int initialised;	/* FFTW's own global state: init once */
+	n = rc_fft_thread_count(n);
 	if (!initialised) {
 		fftw_init_threads();
 		initialised = 1;
@@ -52,9 +65,7 @@ rc_fft_set_threads(int n)
 	fftw_plan_with_nthreads(n);
 	return n;
 #else
-	(void)n;
-	(void)env_threads;
-	return 1;
+	return rc_fft_thread_count(n);
 #endif
 }
 
