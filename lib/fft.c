@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "atomic.h"
@@ -263,6 +264,23 @@ rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 }
 
 
+void *
+rc_fft_huge(size_t n, void **block)
+{
+	const size_t page = (size_t)2 << 20;
+	uintptr_t at;
+
+	if (n < page || n > SIZE_MAX - page)
+		return *block = fftw_malloc(n);
+	if ((*block = fftw_malloc(n + page)) == NULL)
+		return NULL;
+	at = ((uintptr_t)*block + page - 1) & ~(uintptr_t)(page - 1);
+#ifdef MADV_HUGEPAGE
+	(void)madvise((void *)at, n / page * page, MADV_HUGEPAGE);	/* advice */
+#endif
+	return (void *)at;
+}
+
 int
 rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err)
@@ -277,8 +295,9 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 	f->nx = nx;
 	f->ny = ny;
 	f->nxc = nx / 2 + 1;
-	f->real = fftw_alloc_real(nx * ny);
-	f->spec = fftw_alloc_complex(f->nxc * ny);
+	f->real = rc_fft_huge(nx * ny * sizeof(double), &f->real_block);
+	f->spec = rc_fft_huge(f->nxc * ny * sizeof(fftw_complex),
+	    &f->spec_block);
 	if (f->real == NULL || f->spec == NULL) {
 		rc_fft_free(f);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers)",
@@ -336,8 +355,8 @@ rc_fft_free(rc_fft *f)
 		if (f->block_tail[what])
 			fftw_destroy_plan(f->block_tail[what]);
 	}
-	fftw_free(f->real);
-	fftw_free(f->spec);
+	fftw_free(f->real_block != NULL ? f->real_block : f->real);
+	fftw_free(f->spec_block != NULL ? f->spec_block : f->spec);
 	memset(f, 0, sizeof(*f));
 }
 

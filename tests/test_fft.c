@@ -3,6 +3,7 @@
  * and in-place c2r plan. */
 #include <complex.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -294,10 +295,52 @@ test_gbar_bits(void)
 		}
 }
 
+/* rc_fft_init's buffers of 2 MB and more start on a 2 MB boundary (huge
+ * pages, rc_fft_huge), and the transforms on them give the same bits as
+ * FFTW's on buffers of fftw_malloc; below 2 MB they are fftw_malloc's. */
+static void
+test_huge(void)
+{
+	const size_t nx = 512, ny = 512, nxc = nx / 2 + 1;
+	rc_fft f, small;
+	double *in = fftw_alloc_real(nx * ny);
+	fftw_complex *out = fftw_alloc_complex(nxc * ny);
+	fftw_plan p;
+	void *block;
+	char *b;
+
+	rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, NULL);
+	p = fftw_plan_dft_r2c_2d((int)ny, (int)nx, in, out, FFTW_ESTIMATE);
+	test_int((long long)((uintptr_t)f.real % ((size_t)2 << 20)), 0,
+	    "512^2 real buffer on a 2 MB boundary");
+	test_int((long long)((uintptr_t)f.spec % ((size_t)2 << 20)), 0,
+	    "512^2 spectrum on a 2 MB boundary");
+	for (size_t k = 0; k < nx * ny; k++)
+		in[k] = f.real[k] = sin(0.001 * (double)(k * k % 7919)) + (double)k / (double)(nx * ny);
+	rc_fft_forward(&f);
+	fftw_execute(p);
+	test_true(memcmp(f.spec, out, nxc * ny * sizeof(fftw_complex)) == 0,
+	    "512^2 r2c on huge-page buffers: the same bits as on fftw_malloc's");
+	rc_fft_init(&small, 64, 64, RC_FFT_ESTIMATE, NULL);
+	test_true((void *)small.real == small.real_block && (void *)small.spec ==
+	    small.spec_block, "64^2 buffers: fftw_malloc's, as they are");
+	b = rc_fft_huge(((size_t)2 << 20) + 5, &block);
+	memset(b, 1, ((size_t)2 << 20) + 5);	/* all of it writable (ASan) */
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: aligned inside its block");
+	fftw_free(block);
+	fftw_destroy_plan(p);
+	fftw_free(in);
+	fftw_free(out);
+	rc_fft_free(&small);
+	rc_fft_free(&f);
+}
+
 int
 main(void)
 {
 	test_gbar_bits();
+	test_huge();
 	test_threads();
 	test_policy();
 	test_wisdom();

@@ -23,7 +23,8 @@ rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
 	e->nxc = e->fft.nxc;
 	e->n = nx * ny;
 	e->modulus = modulus;
-	e->stiffness = fftw_alloc_real(e->nxc * ny);
+	e->stiffness = rc_fft_huge(e->nxc * ny * sizeof(double),
+	    &e->stiffness_block);
 	if (e->stiffness == NULL) {
 		rc_fft_free(&e->fft);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of stiffness table)",
@@ -220,7 +221,8 @@ void
 rc_elastic_free(rc_elastic *e)
 {
 	rc_fft_free(&e->fft);
-	fftw_free(e->stiffness);
+	fftw_free(e->stiffness_block != NULL ? e->stiffness_block :
+	    e->stiffness);
 	memset(e, 0, sizeof(*e));
 }
 
