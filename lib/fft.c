@@ -276,7 +276,15 @@ rc_fft_huge(size_t n, void **block)
 		return NULL;
 	at = ((uintptr_t)*block + page - 1) & ~(uintptr_t)(page - 1);
 #ifdef MADV_HUGEPAGE
-	(void)madvise((void *)at, n / page * page, MADV_HUGEPAGE);	/* advice */
+	/* Advice, failure changes nothing.  The part past the last whole
+	 * 2 MB stays on small pages (glibc's hugetlb tunable advises whole
+	 * mappings): a huge page there would hold up to 2 MB unused. */
+	uintptr_t whole = at + n / page * page;
+	uintptr_t end = ((uintptr_t)*block + n + page) & ~(uintptr_t)4095;
+
+	(void)madvise((void *)at, whole - at, MADV_HUGEPAGE);
+	if (end > whole)
+		(void)madvise((void *)whole, end - whole, MADV_NOHUGEPAGE);
 #endif
 	return (void *)at;
 }
