@@ -18,11 +18,12 @@
  * process id and open files).  Unless the user set GLIBC_TUNABLES, the
  * restart also sets glibc.malloc.hugetlb=1 (glibc >= 2.35; older ones
  * ignore it), so that malloc asks for transparent huge pages on its large
- * blocks, the grids and FFT buffers: a first touch faults once per 2 MB
- * instead of once per 4 kB (on this project's virtual machine a 4 kB
- * fault costs about 13 us: 5000 of them were 60 of the 140 ms of CPU a
- * 512^2 gfmd-solve spends outside its iterations; with it 2600, 100 ms;
- * perf stat).  The restarted program removes that variable again, so the
+ * blocks (those rc_fft_huge does not place, fft.h): a first touch
+ * faults once per 2 MB instead of once per 4 kB (on this project's
+ * virtual machine a 4 kB fault costs about 13 us; a 512^2 gfmd-solve
+ * outside its iterations: 2870 faults and 92 ms of CPU without it, 1256
+ * and 71 ms with it; perf stat, medians of 7; its peak resident size 1.2
+ * MB larger).  The restarted program removes that variable again, so the
  * programs it runs do not inherit it.  Nothing happens for one thread (no team,
  * nothing spins: so -j 1 and runs under make -j N start once) or when the
  * user set a policy.  Returns 0 then, -1 if it could not execute (no
