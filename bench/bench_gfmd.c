@@ -18,8 +18,9 @@
  * other processes on the machine disturb far less than the wall time.
  * Two more method rows, cg-plastic and fire-plastic, solve with the pressure
  * capped at the hardness H = 4 p (gfmd-solve --hardness;
- * lib/solver/solver_cg_plastic.c, and FIRE on pressures,
- * lib/solver/solver_fire_free.c, on both boundary kinds): the cost of
+ * lib/solver/solver_cg.c and FIRE on pressures,
+ * lib/solver/solver_fire_free.c, on the cap of lib/solver/solver_hardness.c,
+ * both boundary kinds): the cost of
  * plasticity against the elastic rows of the same map (their a_r error is
  * against the elastic reference, so it shows the effect).
  * Two more, fire-layer and cg-layer, solve the same map on a bonded elastic
@@ -38,7 +39,7 @@
  * are padded pairs, as the fire row's.
  * From RC_FFT_BLOCKED_POINTS (1024^2) on, where the periodic solves take
  * the blocked transforms (fft.h) and FIRE runs its passes block by block
- * between them (solver_fire.c), fire-plain and cg-plain solve the same
+ * between them (solver_fire_loop.c), fire-plain and cg-plain solve the same
  * map with FFTW's whole-grid pair and separate passes: the gain.
  *
  * Both boundary kinds side by side (column boundary): free boundaries

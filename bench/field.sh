@@ -16,7 +16,8 @@
 # points, as surfstat --iso's Sq) with the manifest's row of the same
 # channel (title, else number), relative 1e-6: "right", "wrong(FIELDS)",
 # "unchecked" (no manifest row: Gwyddion cannot read the file) or
-# "refused".  Every command runs under timeout; each gfmd-solve run (both
+# "refused"; a line scan not uniformly spaced, which has no --iso, is
+# read by surfstat's scalar row (its hrms in the note), unchecked.  Every command runs under timeout; each gfmd-solve run (both
 # pressures) is bounded by FIELD_TIMEOUT CPU seconds (default 90: its user
 # and system time from /proc, so that a loaded machine does not stop it
 # early; wall seconds where /proc is missing), by 10 FIELD_TIMEOUT wall
@@ -190,6 +191,14 @@ read_check() {
 		return 1
 	fi
 	if ! timeout $STEP_TLIM "$RC_BIN/surfstat" -q --iso "$f" >"$TMP/raw.tsv" 2>"$TMP/raw.err"; then
+		# a line scan not uniformly spaced has no --iso: surfstat's
+		# scalar row of it as it is (piecewise linear) says it is read
+		if grep -q "not uniformly spaced is analysed as it is" "$TMP/raw.err" &&
+		    timeout $STEP_TLIM "$RC_BIN/surfstat" -q "$f" >"$TMP/nu.tsv" 2>"$TMP/raw.err"; then
+			R_NX=$(col "$TMP/nu.tsv" nx) R_NY=$(col "$TMP/nu.tsv" ny) R_READ=unchecked
+			R_NOTE="not uniformly spaced, read as it is: lx $(col "$TMP/nu.tsv" lx), hrms $(col "$TMP/nu.tsv" hrms), rms_slope $(col "$TMP/nu.tsv" rms_slope) ($(col "$TMP/nu.tsv" unit))"
+			return 0
+		fi
 		R_READ=refused R_NOTE=$(msg "$TMP/raw.err" "$base")
 		return 1
 	fi

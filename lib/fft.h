@@ -169,7 +169,7 @@ void rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 /* 1 if f takes the blocked path. */
 int rc_fft_conv_blocked(const rc_fft *f);
 /* The blocked path's stages, for a caller that works on each block of
- * rows while it is in cache (lib/solver/solver_fire.c): the r2c of block b of
+ * rows while it is in cache (lib/solver/solver_fire_loop.c): the r2c of block b of
  * RC_FFT_BLOCK rows of in into spec, the columns with the multiplier
  * (threads over column blocks), the c2r of block b of spec into out (it
  * destroys that block of spec).  Blocks b < rc_fft_row_blocks(f) hold

@@ -112,6 +112,7 @@ rc_grid_free(rc_grid *g)
 	fftw_free(g->z);
 	free(g->valid);
 	free(g->filled);
+	free(g->x);
 	free(g);
 }
 
@@ -157,6 +158,11 @@ rc_grid_clone(const rc_grid *g, int copy_values, rc_err *err)
 				goto fail;
 			memcpy(c->filled, g->filled, rc_grid_size(g));
 		}
+	}
+	if (g->x != NULL) {	/* the positions are the shape's, not values */
+		if ((c->x = rc_malloc(g->nx * sizeof(*c->x), err)) == NULL)
+			goto fail;
+		memcpy(c->x, g->x, g->nx * sizeof(*c->x));
 	}
 	return c;
 fail:

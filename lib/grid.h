@@ -20,6 +20,13 @@
  * Missing points: valid is NULL when every point is valid; otherwise nx*ny
  * flags, 1 valid and 0 missing, and z is NaN at every missing point.
  *
+ * Positions: x is NULL for the uniform spacing lx/nx above; otherwise
+ * the grid is a line scan not uniformly spaced (ny = 1, read only when
+ * rc_read_opts.nonuniform asks): x holds the nx strictly increasing
+ * positions of its heights, lx = x[nx-1] - x[0] and ly = lx / (nx - 1),
+ * the mean step (SurfaceTopography's NonuniformLineScan).  Only what says
+ * so takes such a grid (stats_nonuni.h); the rest must refuse it.
+ *
  * Filled points: filled is NULL, or nx*ny flags, 1 where the value was
  * made up by filling a missing point (rc_fill_harmonic) instead of
  * measured; a filled point is valid.  The flags follow the values: steps
@@ -68,6 +75,7 @@ typedef struct rc_grid {
 	char **history;		/* one command line per entry, oldest first */
 	size_t nhistory;
 	double *z;		/* nx*ny values, FFTW-aligned */
+	double *x;		/* NULL, or nx increasing positions (ny = 1) */
 } rc_grid;
 
 /* Allocate a zeroed grid; checks dimensions and overflow. */

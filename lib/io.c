@@ -217,6 +217,10 @@ text_or_vendor(const char *path, const rc_err *terr, rc_chanset *s,
 static int read_channels(FILE *fp, const char *path, const rc_read_opts *o,
     rc_chanset *s, int depth, rc_err *err);
 
+/* Set in the nesting depth below a gzip layer: a container's member
+ * (depth 1) may be gzip-compressed, a gzip layer may not hold another. */
+#define DEPTH_IN_GZIP 0x100
+
 /* gzip or UTF-16 input: the channels of what it decodes to.  One layer
  * of gzip (a .gz of a .gz is refused, so no nesting multiplies). */
 static int
@@ -227,12 +231,13 @@ decoded(rc_in *in, enum rc_decoding how, const rc_read_opts *o,
 	FILE *fp;
 	int r;
 
-	if (depth > 0 && how == RC_DECODE_GZIP)
+	if ((depth & DEPTH_IN_GZIP) && how == RC_DECODE_GZIP)
 		return rc_seterr(err, "gzip inside gzip: decompress the outer "
 		    "layer first (gunzip)");
 	if ((fp = rc__decode_open(in, how, msg, err)) == NULL)
 		return -1;
-	r = read_channels(fp, NULL, o, s, depth + 1, err);
+	r = read_channels(fp, NULL, o, s, (depth + 1) |
+	    (how == RC_DECODE_GZIP ? DEPTH_IN_GZIP : 0), err);
 	fclose(fp);
 	if (msg[0] != '\0') {
 		rc__chanset_free(s);
@@ -546,6 +551,10 @@ rc_grid_write_stream(const rc_grid *g, FILE *fp, enum rc_format fmt,
 {
 	int r;
 
+	if (g->x != NULL)	/* no format keeps the positions */
+		return rc_seterr(err, "a line scan not uniformly spaced (%zu "
+		    "positions) cannot be written as a grid; --uniform resamples "
+		    "it onto a uniform step", g->nx);
 	switch (fmt) {
 	case RC_FMT_SURF: r = rc__surf_write(g, fp, err); break;
 	case RC_FMT_NPY: r = rc__npy_write(g, fp, err); break;

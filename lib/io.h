@@ -52,6 +52,10 @@ typedef struct rc_read_opts {
 	int uniform;		/* x-z columns whose x is not uniformly spaced
 				 * are resampled linearly onto n points of a
 				 * uniform step (default: refused) */
+	int nonuniform;		/* such columns are read as they are: an
+				 * nx x 1 grid with its positions in x
+				 * (grid.h); for a caller that analyses them
+				 * (stats_nonuni.h).  uniform wins. */
 } rc_read_opts;
 
 /* The defaults: zeroes, except L = 1 x 1. */

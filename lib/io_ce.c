@@ -18,7 +18,8 @@
  * applied already (a Bruker file's height_scale is its Zsens times its Z
  * scale, which its reader applies).  detrend_mode is kept as metadata,
  * not applied (surfwarp --detrend does that).  A non-uniform line scan's
- * size is its x span (n - 1 steps) when resampled (--uniform).
+ * size is its x span (n - 1 steps), resampled (--uniform) or read as
+ * it is (rc_read_opts.nonuniform: then its positions follow the size).
  *
  * Memory: meta.yml is at most CE_META_MAX bytes, all members together
  * unpack to at most CE_TOTAL_MAX (io_zip.c's bound), and no container
@@ -203,6 +204,10 @@ complete(rc_grid *g, const struct topo *p, rc_err *err)
 				want[0] *= (double)g->nx / (double)(g->nx - 1);
 			if (p->nsize == 1)
 				want[1] = want[0] / (double)g->nx;
+			for (size_t i = 0; g->x != NULL && i < g->nx; i++)
+				g->x[i] *= want[0] / g->lx;	/* positions too */
+			if (g->x != NULL)
+				want[1] = want[0] / (double)(g->nx - 1);
 			g->lx = want[0];
 			g->ly = want[1];
 		}

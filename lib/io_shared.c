@@ -588,6 +588,9 @@ rc_grid_read_finish(rc_grid *g, const rc_read_opts *o, rc_err *err)
 		return -1;
 	if (o == NULL)
 		return 0;
+	if (o->periodic == RC_PERIODIC_YES && g->x != NULL)
+		return rc_seterr(err, "--periodic: a line scan not uniformly "
+		    "spaced is a measurement, not one period of a surface");
 	if (o->periodic == RC_PERIODIC_YES)
 		g->periodic = 1;
 	else if (o->periodic == RC_PERIODIC_NO)

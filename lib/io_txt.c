@@ -20,7 +20,9 @@
  * are interpolated linearly (GSL) onto n points of step
  * (x_last - x_first) / (n - 1), a point on the grid keeping its height
  * exactly, and a grid point whose interval touches a missing height is
- * missing.  Periodic: our own files say (1 when
+ * missing; or, when the options ask to keep them as they are
+ * (rc_read_opts.nonuniform), read as an n x 1 grid that carries its x
+ * positions (grid.h).  Periodic: our own files say (1 when
  * they do not), a plain matrix is periodic, exports and columns
  * (measurements) are not.
  */
@@ -117,6 +119,29 @@ on_grid(double a, double a0, double d, size_t k, double ulp)
 	return fabs(a - (a0 + (double)k * d)) <= fmax(0.01 * fabs(d), tol);
 }
 
+/* The n x-z points (v: x, z pairs) into x and z in increasing x (a
+ * profile written backwards is turned round); x must be strictly
+ * monotonic ("what" says what needs it). */
+static int
+profile_in_order(const double *v, size_t n, double *x, double *z,
+    const char *what, rc_err *err)
+{
+	int down = v[2] < v[0];
+
+	for (size_t k = 0; k < n; k++) {
+		size_t src = down ? n - 1 - k : k;
+
+		x[k] = v[2 * src];
+		z[k] = v[2 * src + 1];
+		if (!isfinite(x[k]) || (k > 0 && !(x[k] > x[k - 1])))
+			return rc_seterr(err, "%zu x-z points: x is not strictly "
+			    "monotonic (line %zu of the data: x = %g): %s needs the "
+			    "points in order of x, each x once", n, src + 1, x[k],
+			    what);
+	}
+	return 0;
+}
+
 /* n x-z points (v: x, z pairs) in strictly monotonic, not uniformly
  * spaced x, interpolated linearly onto n points of a uniform step (the
  * header comment says how). */
@@ -124,26 +149,14 @@ static rc_grid *
 resample_profile(const double *v, size_t n, rc_err *err)
 {
 	double *x = NULL, *z = NULL, dx;
-	int down = v[2] < v[0];
 	gsl_interp *ip = NULL;
 	gsl_interp_accel *acc = NULL;
 	rc_grid *g = NULL;
 
 	if ((x = rc_malloc(n * sizeof(*x), err)) == NULL ||
-	    (z = rc_malloc(n * sizeof(*z), err)) == NULL)
+	    (z = rc_malloc(n * sizeof(*z), err)) == NULL ||
+	    profile_in_order(v, n, x, z, "resampling", err) != 0)
 		goto out;
-	for (size_t k = 0; k < n; k++) {
-		size_t src = down ? n - 1 - k : k;
-
-		x[k] = v[2 * src];
-		z[k] = v[2 * src + 1];
-		if (!isfinite(x[k]) || (k > 0 && !(x[k] > x[k - 1]))) {
-			rc_seterr(err, "%zu x-z points: x is not strictly monotonic "
-			    "(line %zu of the data: x = %g): resampling needs the "
-			    "points in order of x, each x once", n, src + 1, x[k]);
-			goto out;
-		}
-	}
 	dx = (x[n - 1] - x[0]) / (double)(n - 1);
 	if ((ip = gsl_interp_alloc(gsl_interp_linear, n)) == NULL ||
 	    (acc = gsl_interp_accel_alloc()) == NULL) {
@@ -176,6 +189,32 @@ out:
 	gsl_interp_accel_free(acc);
 	if (ip != NULL)
 		gsl_interp_free(ip);
+	free(x);
+	free(z);
+	return g;
+}
+
+/* n x-z points (v: x, z pairs) in strictly monotonic, not uniformly
+ * spaced x, as they are (rc_read_opts.nonuniform): an n x 1 grid with
+ * its positions in g->x (grid.h), a measurement (not periodic). */
+static rc_grid *
+nonuniform_profile(const double *v, size_t n, rc_err *err)
+{
+	double *x = NULL, *z = NULL, lx;
+	rc_grid *g = NULL;
+
+	if ((x = rc_malloc(n * sizeof(*x), err)) == NULL ||
+	    (z = rc_malloc(n * sizeof(*z), err)) == NULL ||
+	    profile_in_order(v, n, x, z, "a non-uniform profile", err) != 0)
+		goto out;
+	lx = x[n - 1] - x[0];
+	if ((g = rc__io_grid_alloc(n, 1, lx, lx / (double)(n - 1), err)) == NULL)
+		goto out;
+	memcpy(g->z, z, n * sizeof(*z));
+	g->x = x;
+	x = NULL;
+	g->periodic = 0;
+out:
 	free(x);
 	free(z);
 	return g;
@@ -229,6 +268,8 @@ columns(const double *v, size_t ncol, size_t n, const double *ulp,
 	}
 	if (bad < n && ncol == 2 && o != NULL && o->uniform)
 		return resample_profile(v, n, err);
+	if (bad < n && ncol == 2 && o != NULL && o->nonuniform)
+		return nonuniform_profile(v, n, err);
 	if (bad < n) {
 		if (ncol == 2)
 			rc_seterr(err, "%zu x-z points (2 values per line): x is not "

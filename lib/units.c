@@ -121,6 +121,8 @@ rc_grid_to_common_unit(rc_grid *g, const char *unit, rc_err *err)
 		ez = elat;
 	g->lx = scale10(g->lx, elat - et);
 	g->ly = scale10(g->ly, elat - et);
+	for (size_t i = 0; g->x != NULL && i < g->nx; i++)
+		g->x[i] = scale10(g->x[i], elat - et);
 	if (rc_grid_check_shape(g->nx, g->ny, g->lx, g->ly, err) != 0)
 		return -1;
 	if (lengths && ez != et) {

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_plastic.c - perfect plasticity (opts.hardness; the CG of
- * solver_cg_plastic.c, FIRE on pressures of solver_fire_free.c): the
+ * solver_cg.c and FIRE on pressures of solver_fire_free.c, both on the
+ * cap of solver_hardness.c): the
  * bound, load balance and complementarity; FIRE against the CG on the
  * same maps; the full-plasticity limit a_r = p/H; H -> infinity against
  * the elastic solvers; a flat punch that flows entirely at the load H A;

@@ -345,7 +345,7 @@ fire_scaling(void)
 }
 
 /* The blocked transforms, with FIRE's passes run block by block between
- * the row transforms (solver_fire.c), against the plain ones on a
+ * the row transforms (solver_fire_loop.c), against the plain ones on a
  * non-square grid with tail blocks both ways: the same iterations and
  * contact set, heights and pressures to rounding (1e-10 of their range:
  * the arithmetic is the same point by point, only the transforms' and

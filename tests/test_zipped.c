@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zip.h>
+#include <zlib.h>
 
 #include "io.h"
 #include "units.h"
@@ -335,7 +336,42 @@ container(void)
 	    "a listing reads every member, --channel or not");
 	free(info);
 	info = NULL;
+	/* read as it is (rc_read_opts.nonuniform): b keeps its positions,
+	 * its size the x span in meta.yml's unit, and the container reads
+	 * without --uniform */
 	o.channel = 0;
+	o.nonuniform = 1;
+	test_true(rc_grid_list_channels(path, &o, &info, &n, &err) == 0 &&
+	    n == 3 && info[1].nx == 6 && info[1].lx == 4 &&
+	    strcmp(info[1].unit, "um") == 0, "non-uniform b listed as 6 "
+	    "points over 4 um (%s)", n == 3 ? "" : err.msg);
+	free(info);
+	info = NULL;
+	g = rc_grid_read(path, &o, &err);
+	test_true(g != NULL && g->x == NULL && g->nx == 4,
+	    "the container reads without --uniform: its first channel, a (%s)",
+	    g ? "" : err.msg);
+	rc_grid_free(g);
+	o.channel = 2;
+	g = rc_grid_read(path, &o, &err);
+	test_true(g != NULL && g->x != NULL && g->nx == 6 && g->x[3] == 2.5 &&
+	    g->z[3] == 1 && g->lx == 4, "b: positions 0 1 2 2.5 3 4, height 1 "
+	    "at 2.5 (%s)", g ? "" : err.msg);
+	rc_grid_free(g);
+	/* meta.yml's size of b, a file without units, wins: 8 for its
+	 * span 4 doubles its positions */
+	snprintf(bad, sizeof(bad), "%s", meta);
+	p = strstr(bad, "size: [4.0]");
+	memcpy(p, "size: [8.0]", 11);
+	put_container(path, bad, "c.surf");
+	g = rc_grid_read(path, &o, &err);
+	test_true(g != NULL && g->x != NULL && g->lx == 8 && g->x[3] == 5 &&
+	    g->x[5] == 8 && g->ly == 8.0 / 5, "b sized 8 by meta.yml: "
+	    "positions doubled, mean step 8/5 (%s)", g ? "" : err.msg);
+	rc_grid_free(g);
+	put_container(path, meta, "c.surf");
+	o.channel = 0;
+	o.nonuniform = 0;
 	o.uniform = 1;
 	/* c's size in meta.yml disagreeing with the file's: refused */
 	snprintf(bad, sizeof(bad), "%s", meta);
@@ -400,6 +436,61 @@ nested(void)
 	rc_grid_free(g);
 }
 
+/* A member that is gzip-compressed is read through one gzip layer (it
+ * was refused as "gzip inside gzip"); gzip inside that stays refused. */
+static void
+gzip_member(void)
+{
+	const char *path = test_path("gz.zip"), *gz = test_path("m.txt.gz");
+	static const char yml[] = "surfaces:\n- topographies:\n  - name: m\n"
+	    "    datafile: {original: m.txt.gz}\n    unit: nm\n";
+	const char *names[] = { "meta.yml", "m.txt.gz" };
+	const char *texts[2] = { yml, NULL };
+	size_t lens[2] = { 0 };
+	long n;
+	FILE *fp;
+	char *buf;
+	rc_err err;
+	rc_grid *g;
+	gzFile z;
+
+	for (int layers = 1; layers <= 2; layers++) {
+		z = gzopen(gz, "wb");
+		if (layers == 1)
+			gzputs(z, "0 1\n1 2\n2 4\n3 8\n");
+		else {
+			/* a gzip file as the content of a gzip file */
+			static const unsigned char inner[] = { 0x1f, 0x8b, 8, 0, 0,
+			    0, 0, 0, 0, 3, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0 };
+
+			gzwrite(z, inner, sizeof(inner));
+		}
+		gzclose(z);
+		fp = fopen(gz, "rb");
+		fseek(fp, 0, SEEK_END);
+		n = ftell(fp);
+		rewind(fp);
+		buf = malloc((size_t)n);
+		if (fread(buf, 1, (size_t)n, fp) != (size_t)n)
+			abort();
+		fclose(fp);
+		texts[1] = buf;
+		lens[1] = (size_t)n;
+		put_zip(path, 2, names, texts, lens);
+		free(buf);
+		g = rc_grid_read(path, NULL, &err);
+		if (layers == 1)
+			test_true(g != NULL && g->nx == 4 && g->z[3] == 8 &&
+			    strcmp(g->unit, "nm") == 0, "a gzip-compressed member: "
+			    "read (%s)", g ? "" : err.msg);
+		else
+			test_true(g == NULL && strstr(err.msg, "gzip inside gzip"),
+			    "gzip inside a gzip member: refused ('%s')",
+			    g ? "read" : err.msg);
+		rc_grid_free(g);
+	}
+}
+
 int
 main(void)
 {
@@ -408,5 +499,6 @@ main(void)
 	mitutoyo();
 	container();
 	nested();
+	gzip_member();
 	return test_summary();
 }

@@ -663,6 +663,7 @@ read_grid(const struct tool *t, const char *path, const char *channel)
 	o.periodic = (enum rc_periodic_opt)t->periodic;
 	o.npy_xy = t->npy_xy;
 	o.uniform = t->uniform;
+	o.nonuniform = t->nonuniform;
 	if (channel != NULL && strspn(channel, "0123456789") == strlen(channel))
 		o.channel = atoi(channel);
 	else
@@ -674,7 +675,9 @@ read_grid(const struct tool *t, const char *path, const char *channel)
 	if (g == NULL)
 		tool_fail_at(t, rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);
-	if (g->valid != NULL && !t->accept_missing) {
+	/* a tool that reads line scans not uniformly spaced as they are
+	 * (t->nonuniform) takes their missing points too */
+	if (g->valid != NULL && !t->accept_missing && g->x == NULL) {
 		size_t missing = rc_grid_missing_count(g), n = rc_grid_size(g);
 
 		rc_grid_free(g);	/* not leaked on the way out (issue 27) */
@@ -720,6 +723,7 @@ tool_list_channels(const struct tool *t, const char *path)
 	o.have_l = t->have_l;
 	o.npy_xy = t->npy_xy;	/* nx, ny as the grid would be read */
 	o.uniform = t->uniform;
+	o.nonuniform = t->nonuniform;
 	if (rc_grid_list_channels(path, &o, &c, &n, &err) != 0)
 		tool_fail(t, "%s: %s", rc_is_stdio(path) ? "standard input" : path,
 		    err.msg);

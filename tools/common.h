@@ -64,6 +64,8 @@ struct tool {
 	int periodic;		/* --periodic, --no-periodic (enum rc_periodic_opt) */
 	int npy_xy;		/* --npy-order xy */
 	int uniform;		/* --uniform: resample non-uniform x-z profiles */
+	int nonuniform;		/* the tool analyses non-uniform x-z profiles
+				 * as they are (rc_read_opts.nonuniform) */
 	int accept_missing;	/* the tool can use grids with missing points */
 	const char *channel;	/* --channel N|NAME of the main input, or NULL */
 	struct tool_file *files;	/* inputs and outputs (tool_input, tool_output) */

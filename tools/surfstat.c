@@ -25,6 +25,7 @@
 #include "psd.h"
 #include "spectral.h"
 #include "stats.h"
+#include "stats_nonuni.h"
 #include "table_write.h"
 
 enum {
@@ -93,7 +94,9 @@ usage(void)
 	    "  --periodic, --no-periodic  the input is (not) one period of a surface\n"
 	    "  --npy-order yx|xy     .npy shape (ny, nx) (default) or (nx, ny)\n"
 	    "  --uniform             resample an x-z profile whose x is not uniformly\n"
-	    "                        spaced linearly onto as many points\n"
+	    "                        spaced linearly onto as many points (default:\n"
+	    "                        analysed as it is, piecewise linear: hrms,\n"
+	    "                        rms_slope, rms_curvature, --psd)\n"
 	    "  --channel N|NAME      channel of a multi-channel input (default: the\n"
 	    "                        first whose values are lengths)\n"
 	    "  --channels            list the input's channels instead: channel title\n"
@@ -284,6 +287,53 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	rc_row_free(&r);
 }
 
+/* The scalar row of a line scan not uniformly spaced (stats_nonuni.h). */
+static void
+nonuni_scalars(const struct tool *t, const rc_grid *g)
+{
+	rc_nonuni_stats s;
+	rc_err err;
+	rc_row r;
+	struct out o;
+	double seconds = rc_clock();
+
+	if (rc_nonuni_stats_compute(g, &s, &err) != 0)
+		tool_fail(t, "%s", err.msg);
+	seconds = rc_clock() - seconds;
+	if (s.n_missing > 0)
+		tool_warn(t, "%zu of %zu points missing: the segments touching "
+		    "them are left out (%zu of %zu segments kept, length %g of "
+		    "%g)", s.n_missing, s.n, s.n_segments, s.n - 1, s.length,
+		    g->lx);
+	if (isnan(s.rms_curvature))
+		tool_warn(t, "rms_curvature written as nan: it needs two "
+		    "neighbouring interior points with both neighbours valid");
+	rc_row_init(&r);
+	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
+	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||
+	    rc_row_str(&r, "spacing", "nonuniform") != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "lx", g->lx);
+	if (g->unit[0] != '\0' && rc_row_str(&r, "unit", g->unit) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "mean", s.mean);
+	num(t, &r, "hrms", s.hrms);
+	num(t, &r, "rms_slope", s.rms_slope);
+	num(t, &r, "rms_curvature", s.rms_curvature);
+	num(t, &r, "hmin", s.hmin);
+	num(t, &r, "hmax", s.hmax);
+	num(t, &r, "range", s.hmax - s.hmin);
+	if (rc_row_int(&r, "n_missing", (long long)s.n_missing) != 0)
+		tool_fail(t, "out of memory");
+	num(t, &r, "seconds", seconds);
+	if (rc_row_meta(&r, g) != 0)
+		tool_fail(t, "out of memory");
+	out_open(t, &o);
+	out_row(t, &o, &r);
+	out_close(t, &o);
+	rc_row_free(&r);
+}
+
 /* --png with a spectrum table: the spectrum drawn log-log (png_plot.h),
  * with the fit when there is one. */
 static void
@@ -431,7 +481,8 @@ psd1d_table(const struct tool *t, const rc_grid *g, enum rc_psd1d_dir dir,
 	struct out o;
 	rc_row r;
 
-	if (rc_psd1d(g, dir, window, &p, &np, &err) != 0)
+	if ((g->x != NULL ? rc_nonuni_psd(g, window, &p, &np, &err) :
+	    rc_psd1d(g, dir, window, &p, &np, &err)) != 0)
 		tool_fail(t, "%s", err.msg);
 	if (t->png != NULL)
 		spectrum_png(t, g, np ? &p[0].q : NULL, np ? &p[0].c : NULL, np,
@@ -797,6 +848,41 @@ stat_opts_check(struct tool *t, struct stat_opts *so, int argc, char **argv)
 	tool_usage_check(t);
 }
 
+/* A line scan not uniformly spaced (g->x) has the scalar row and the 1D
+ * spectrum of stats_nonuni.h; what needs a uniform grid says so. */
+static void
+check_nonuniform(const struct tool *t, struct stat_opts *so, const rc_grid *g)
+{
+	static const char *const table_option[] = { [T_ACF] = "--acf",
+	    [T_BY_HEIGHT] = "--by-height", [T_ISO] = "--iso",
+	    [T_MR] = "--material-ratio", [T_FIT] = "--fit" };
+	const char *name = so->in ? so->in : "standard input", *what = NULL;
+
+	if (so->table == T_PSD) {
+		so->table = T_PSD1D;
+		so->dir1d = RC_PSD1D_X;
+	}
+	if (so->table != T_SCALARS && so->table != T_PSD1D)
+		what = table_option[so->table];
+	else if (so->table == T_PSD1D && so->dir1d != RC_PSD1D_X)
+		what = "--psd1d y";
+	else if (so->mask_path != NULL)
+		what = "--mask";
+	else if (so->psd2d != NULL)
+		what = "--psd2d";
+	else if (so->gp != NULL)
+		what = "--gnuplot";
+	else if (so->method == RC_DERIV_FD)
+		what = "--fd";
+	else if (t->png != NULL && so->table != T_PSD1D)
+		what = "--png (without --psd)";
+	if (what != NULL)
+		tool_fail(t, "%s: a line scan of %zu points not uniformly spaced "
+		    "is analysed as it is for the scalar row and --psd only; %s "
+		    "needs a uniform grid: --uniform resamples the profile "
+		    "linearly onto %zu points", name, g->nx, what, g->nx);
+}
+
 /* What a grid allows: a profile's spectrum is 1D; missing points only
  * for --iso and --material-ratio. */
 static void
@@ -877,7 +963,7 @@ run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
 	 * take nine), made after the mask so that planning never waits on
 	 * input that turns out bad. */
 	memset(&fft, 0, sizeof(fft));
-	if (table != T_PSD1D && table != T_ISO && table != T_MR &&
+	if (g->x == NULL && table != T_PSD1D && table != T_ISO && table != T_MR &&
 	    (table != T_BY_HEIGHT || so->method == RC_DERIV_SPECTRAL ||
 	    so->psd2d != NULL || so->gp != NULL) && rc_fft_init(&fft, g->nx,
 	    g->ny, tool_fft_effort(t, g->nx, g->ny, 5), &err) != 0)
@@ -912,7 +998,10 @@ run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
 	}
 	switch (table) {
 	case T_SCALARS:
-		scalars(t, g, mask, so->method, plan);
+		if (g->x != NULL)
+			nonuni_scalars(t, g);
+		else
+			scalars(t, g, mask, so->method, plan);
 		break;
 	case T_ACF:
 		acf_table(t, g, plan, so->acf_half);
@@ -961,6 +1050,7 @@ main(int argc, char **argv)
 		stat_option(&t, &so, opt, optarg, argv);
 	}
 	stat_opts_check(&t, &so, argc, argv);
+	t.nonuniform = 1;	/* x-z profiles not uniformly spaced: as they are */
 	if (so.list)
 		tool_list_channels(&t, so.in);
 	tool_fft_setup(&t);
@@ -968,11 +1058,16 @@ main(int argc, char **argv)
 	/* only --iso and --material-ratio use the valid points alone */
 	t.accept_missing = so.table == T_ISO || so.table == T_MR;
 	g = tool_read_input(&t, so.in);
-	check_grid(&t, &so, g);
+	t.nonuniform = 0;	/* a mask is a grid */
+	if (g->x != NULL)
+		check_nonuniform(&t, &so, g);
+	else
+		check_grid(&t, &so, g);
 	/* Windowed spectra, the zero-padded ACF, --iso and --fit treat a
 	 * finite patch as one; the scalar row's spectral derivatives and
 	 * --by-height do not. */
-	if (g->periodic || so.table == T_SCALARS || so.table == T_BY_HEIGHT)
+	if (g->x == NULL && (g->periodic || so.table == T_SCALARS ||
+	    so.table == T_BY_HEIGHT))
 		tool_check_wrap(&t, g, so.in, so.method == RC_DERIV_FD ?
 		    "the spectral gbar takes it" : "the spectral derivatives "
 		    "(gbar, rms_laplacian, nayak, phi1..phi9) take it",

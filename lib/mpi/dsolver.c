@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* dsolver.c - the distributed solver's set-up and contact analysis
- * (lib/mpi/dsolver.h); the iteration itself is lib/solver/solver_fire.c, the
+ * (lib/mpi/dsolver.h); the iteration itself is lib/solver/solver_fire_loop.c, the
  * serial library's, running on the distributed operator of delastic.c. */
 #include "mpi/dsolver.h"
 

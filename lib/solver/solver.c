@@ -9,10 +9,11 @@
  * bound of solver_cg.c for both methods (FIRE then runs on the pressures,
  * solver_fire_free.c).
  *
- * A hardness (perfect plasticity): the CG of solver_cg_plastic.c, or FIRE
- * on the pressures (solver_fire_free.c) on either boundary kind, both
- * with the plastic CG's measure; the elastic periodic FIRE
- * (solver_fire.c) is not involved.
+ * A hardness (perfect plasticity): the CG (solver_cg.c) or FIRE on the
+ * pressures (solver_fire_free.c) on either boundary kind, both on the
+ * hardness cap (interaction.h, solver_hardness.c) instead of the hard
+ * wall (solver_wall.c); the elastic periodic FIRE (solver_fire.c) is not
+ * involved.
  */
 #include "solver_impl.h"
 
@@ -269,8 +270,6 @@ rc_solver_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		r = rc__fire_sigma_solve(s, p, res, err);
 	else if (s->opts.method == RC_METHOD_FIRE)
 		r = rc__fire_solve(s, p, res, err);
-	else if (rc_solver_opts_plastic(&s->opts))
-		r = rc__cg_plastic_solve(s, p, res, err);
 	else
 		r = rc__cg_solve(s, p, res, err);
 	if (r < 0)
@@ -360,16 +359,15 @@ rc_solver_attractive_fraction(const rc_solver *s)
 	return rc_solver_opts_adhesive(&s->opts) ? s->a_attr : 0;
 }
 
+/* The interaction's own column (interaction.h): the cap's; 0 for the
+ * wall and for the methods in heights, which have no cap. */
 double
 rc_solver_plastic_fraction(const rc_solver *s)
 {
-	size_t k, at = 0;
+	rc__interaction in;
 
-	if (!rc_solver_opts_plastic(&s->opts))
-		return 0;
-	for (k = 0; k < s->n; k++)
-		at += s->sigma[k] >= s->opts.hardness;
-	return (double)at / (double)s->n;
+	rc__interaction_of(s, &in);
+	return in.plastic_fraction ? in.plastic_fraction(s) : 0;
 }
 
 rc_fft *

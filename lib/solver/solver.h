@@ -51,8 +51,9 @@ typedef struct rc_solver_opts {
 	/* Perfect plasticity: sigma <= hardness (pressure units, like p);
 	 * 0 or +inf: no cap (the default).  Both methods, both boundary
 	 * kinds, a layer, displacement control; not with adhesion
-	 * (solver_cg_plastic.c; FIRE on pressures, solver_fire_free.c;
-	 * gfmd-solve(1) PLASTICITY). */
+	 * (the cap of solver_hardness.c, which solver_cg.c and FIRE on
+	 * pressures, solver_fire_free.c, run on; gfmd-solve(1)
+	 * PLASTICITY). */
 	double hardness;
 	/* An elastic layer of this thickness (lateral length units) on a
 	 * rigid substrate instead of the half space: k_q of layer.h.  0 with
@@ -82,7 +83,7 @@ typedef struct rc_solver_opts {
 	enum rc_fft_effort fft_effort;
 	/* Periodic grids of at least this many points take the blocked
 	 * transforms (fft.h, rc_fft_convolve), on which FIRE runs its passes
-	 * block by block (solver_fire.c); RC_FFT_BLOCKED_POINTS by default,
+	 * block by block (solver_fire_loop.c); RC_FFT_BLOCKED_POINTS by default,
 	 * 0 for always, SIZE_MAX for never (the same answers to rounding).
 	 * Serial build. */
 	size_t fft_block_points;

@@ -1,6 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_cg.c - Polonsky & Keer's constrained conjugate gradient (Wear 231,
- * 1999, 206-219) for the pressure sigma >= 0 of mean p.
+ * 1999, 206-219) for the pressure of mean p in the box of an interaction
+ * (interaction.h): sigma >= 0 (the wall), 0 <= sigma <= H (the cap).
+ * One loop for both; the wall's rules first, then the cap's changes.
  *
  * The surface height of the elastic body under sigma is u = G sigma + c,
  * G_q = 1/k_q, c the rigid-body level.  On the contact set I_c = {sigma > 0}
@@ -54,6 +56,34 @@
  * the scale that turns a gap error into a
  * pressure: residual = max(k_max rms(u' - u) / p, |<sigma> - p| / p).
  * It is computed without a transform.
+ *
+ * The cap (perfect plasticity, H = opts.hardness) minimises the
+ * complementary energy (1/2) sigma.G sigma - sigma.h over the box
+ * [0, H]^N with the mean fixed, c the multiplier of the mean.  Its rules
+ * (in->cg_reentry 0) change the wall's in these ways:
+ *   - the level c is the mean of h - G sigma over the free points
+ *     F = {0 < sigma < H} (solver_hardness.c);
+ *   - the direction and step run over F, the penetrating points at zero
+ *     pressure (g < 0) and the points at H whose gap opened (g > 0), the
+ *     conjugation over all of them, and the new pressures are projected
+ *     onto [0, H] (a step of tau <= 0 moves every such point by -g /
+ *     G_00);
+ *   - no damping; instead a trust region: no pressure moves by more than
+ *     the interaction's max_move, H/2, in one step (solver_hardness.c
+ *     says why);
+ *   - the load is restored by scaling down all pressures when they carry
+ *     too much (this keeps them in [0, H]), or else by scaling up those
+ *     of F, moving to H the points that would exceed it, until the mean
+ *     is p (a few rounds; the H set only grows).  If no point below H
+ *     carries pressure, the missing load goes uniformly to the points at
+ *     zero pressure that penetrate (or to all at zero).
+ * G sigma is recomputed after every iteration that did anything but a
+ * uniform scaling (the clipping at H is not linear): about two FFT pairs
+ * per iteration where the wall needs one near convergence.  The
+ * convergence measure is the wall's with u' = h on F, max(v, h) at zero
+ * pressure and min(v, h) at H (v = G sigma + c; rc__pressure_check).
+ * FIRE on pressures (solver_fire_free.c) solves the same problem; p > H
+ * is refused by solver.c for both.
  */
 #include "solver_impl.h"
 
@@ -78,93 +108,70 @@ rc__cg_alloc(rc_solver *s, rc_err *err)
 	return 0;
 }
 
-/* Residual of (u', sigma); leaves u' in s->u, the contact set and the
- * elastic energy.  s->u holds G sigma on entry. */
-static double
-final_check(rc_solver *s, double p)
-{
-	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
-	double *u = s->u, *ku = s->el.fft.real;
-	const double *h = s->height, *sigma = s->sigma;
-
-	if (s->free_bc)
-		return rc__final_check_free(s, p);
-	rc__level(s, &c);
-#pragma omp parallel for schedule(static)
-	for (k = 0; k < n; k++) {
-		double v = u[k] + c;
-
-		s->contact[k] = sigma[k] > 0;
-		u[k] = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
-	}
-	rc_elastic_force(&s->el, u, ku);
-#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
-	for (k = 0; k < n; k++) {
-		double d = p + ku[k] - sigma[k];
-
-		sum_d2 += d * d;
-		sum_s += sigma[k];
-		sum_e += ku[k] * u[k];
-	}
-	s->energy = 0.5 * sum_e / (double)n;
-	return rc__residual(s, p, sum_d2, sum_s);
-}
-
 /* Long: one Polonsky-Keer iteration: its passes share the sums and the
  * conjugate direction. */
 int
 rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
-	rc_elastic *e = &s->el;
+	rc__interaction in;
 	size_t n = s->n, k, n_contact = 0;
 	double *sigma = s->sigma, *disp = s->u, *t = s->cg_dir;
-	double *r = s->free_bc ? s->scratch : e->fft.real;
+	double *r = s->free_bc ? s->scratch : s->el.fft.real;
 	double k_max = rc__stiffness_max(s);
 	const double *h = s->height;
-	double g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
+	double H, g_old = 1, c = 0, residual = HUGE_VAL, bound = HUGE_VAL;
 	double g00 = 0;		/* G_00, computed when first needed */
-	double pn = p * (double)n, inv_n = 1.0 / (double)n;
+	double inv_n = 1.0 / (double)n;
 	long it, since_refresh = 0;
 	double damp = 1, prev_bound = HUGE_VAL;
-	int set_changed = 0;
+	int set_changed = 0, reentry;
 	int stale = 1, conjugate = 0, status = 1, next;
 
 	(void)err;
-	rc__cg_initial_pressure(s, p);
+	rc__interaction_of(s, &in);
+	H = in.H;
+	reentry = in.cg_reentry;
+	in.start(s, p);
 	memset(t, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double gsum = 0, pen = 0, sum_gt = 0, sum_rt = 0, sum_r = 0;
-		double sum_t = 0, sum_s = 0, tau, tau_in, beta, rbar, f;
-		size_t reentered = 0, clipped = 0, n_active = 0;
+		double sum_t = 0, sum_s = 0, tau, tau_in, beta, rbar, t_max = 0;
+		double fit;	/* the level, copied into c: the passes below
+				 * then hold c in a register (an address taken
+				 * would make OpenMP share it by reference) */
+		size_t reentered = 0, clipped = 0, changed = 0, n_active = 0;
 
-		if (stale || since_refresh >= REFRESH_EVERY) {
+		if (stale || (reentry && since_refresh >= REFRESH_EVERY)) {
 			rc__compliance(s, sigma, disp);
 			stale = 0;
 			since_refresh = 0;
 		}
 		since_refresh++;
-		n_contact = rc__level(s, &c);
+		n_contact = in.level(s, &fit);
+		c = fit;
 		if (n_contact == 0) {
 			/* Cannot happen with sum sigma = p N > 0; guard anyway. */
 			break;
 		}
+		/* the wall conjugates over the contact set, the cap over all
+		 * that take part */
 #pragma omp parallel for reduction(+:gsum, pen) schedule(static)
 		for (k = 0; k < n; k++) {
 			double g = disp[k] + c - h[k];
 
-			if (sigma[k] > 0)
-				gsum += g * g;
-			else if (g < 0)
-				pen += g * g;
+			if (rc__active(sigma[k], g, H)) {
+				if (reentry && !(sigma[k] > 0))
+					pen += g * g;
+				else
+					gsum += g * g;
+			}
 		}
 		bound = k_max * sqrt((gsum + pen) * inv_n) / p;
-		next = rc__cg_next(s, p, bound, it, final_check, &residual,
-		    &status);
+		next = rc__cg_next(s, &in, p, bound, it, 1, &residual, &status);
 		if (next == RC__CG_STOP)
 			break;
 		if (next == RC__CG_STALE) {
-			stale = 1;	/* final_check left u' in disp */
+			stale = 1;	/* the check left u' in disp */
 			continue;
 		}
 		if (s->opts.progress && it % PROGRESS_EVERY == 0)
@@ -173,85 +180,100 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 
 		beta = conjugate ? gsum / g_old : 0;
 		g_old = gsum;
-#pragma omp parallel for reduction(+:sum_gt, sum_t, n_active) schedule(static)
+#pragma omp parallel for reduction(+:sum_gt, sum_t, n_active) \
+    reduction(max:t_max) schedule(static)
 		for (k = 0; k < n; k++) {
 			double g = disp[k] + c - h[k];
 
-			if (sigma[k] > 0 || g < 0) {
+			if (rc__active(sigma[k], g, H)) {
 				t[k] = g + beta * t[k];
 				n_active++;
 				sum_gt += g * t[k];
 				sum_t += t[k];
+				if (!reentry && fabs(t[k]) > t_max)
+					t_max = fabs(t[k]);
 			} else
 				t[k] = 0;
 		}
 		rc__compliance(s, t, r);
 #pragma omp parallel for reduction(+:sum_rt, sum_r) schedule(static)
 		for (k = 0; k < n; k++)
-			if (sigma[k] > 0 || disp[k] + c - h[k] < 0) {
+			if (rc__active(sigma[k], disp[k] + c - h[k], H)) {
 				sum_rt += r[k] * t[k];
 				sum_r += r[k];
 			}
-		rbar = sum_r / (double)n_active;
-		if (!(sum_rt - rbar * sum_t > 0))
-			tau = 0;
-		else
-			tau = sum_gt / (sum_rt - rbar * sum_t);
+		rbar = n_active ? sum_r / (double)n_active : 0;
+		tau = sum_rt - rbar * sum_t > 0 ? sum_gt / (sum_rt - rbar * sum_t) : 0;
+		/* The wall: a step that changed the active set and left a
+		 * larger gap bound overshot: halve the steps until the bound
+		 * falls, then let them grow back (see the top). */
+		if (reentry) {
+			if (it > 0 && set_changed && bound > prev_bound)
+				damp *= DAMP_DEC;
+			else
+				damp = fmin(1, damp * DAMP_INC);
+			prev_bound = bound;
+			tau *= damp;
+		}
+		/* The cap's trust region (the wall: no bound). */
+		if (tau * t_max > in.max_move)
+			tau = in.max_move / t_max;
 		/* The re-entry pressure -tau g needs tau > 0.  With the gap zero
 		 * on the whole contact set (one contact point, or a warm start
 		 * from a solution at a lower load) there is no step and tau = 0,
 		 * so penetrating points would never re-enter and the solve would
 		 * stall at the old contact set.  Then let each re-enter with the
-		 * pressure that alone closes its gap, -g / G_00. */
-		/* A step that changed the active set and left a larger gap
-		 * bound overshot: halve the steps until the bound falls, then
-		 * let them grow back (see the top). */
-		if (it > 0 && set_changed && bound > prev_bound)
-			damp *= DAMP_DEC;
-		else
-			damp = fmin(1, damp * DAMP_INC);
-		prev_bound = bound;
-		tau *= damp;
+		 * pressure that alone closes its gap, -g / G_00 (the cap: each
+		 * point that takes part moves so). */
 		if (tau > 0)
 			tau_in = tau;
 		else {
 			if (!(g00 > 0))
-				g00 = s->free_bc ? s->fel.self : rc__self_compliance(e);
+				g00 = s->free_bc ? s->fel.self :
+				    rc__self_compliance(&s->el);
 			tau_in = 1 / g00;
 		}
-#pragma omp parallel for reduction(+:sum_s, reentered, clipped) schedule(static)
+#pragma omp parallel for reduction(+:sum_s, reentered, clipped, changed) \
+    schedule(static)
 		for (k = 0; k < n; k++) {
-			double g = disp[k] + c - h[k];
+			double g = disp[k] + c - h[k], old = sigma[k], v = old;
 
-			if (sigma[k] > 0) {
-				sigma[k] -= tau * t[k];
-				if (sigma[k] < 0) {
-					sigma[k] = 0;
-					clipped++;
-				}
-			} else if (g < 0) {
-				sigma[k] = tau > 0 ? -tau * t[k] : -tau_in * g;
-				if (sigma[k] > 0)
+			disp[k] -= tau * r[k];	/* G sigma, if the step stays linear */
+			if (rc__active(old, g, H)) {
+				v = tau > 0 || (reentry && old > 0) ?
+				    old - tau * t[k] : old - tau_in * g;
+				if (!reentry) {
+					v = rc__project(v, H);
+					changed += (old <= 0) != (v <= 0) ||
+					    (old >= H) != (v >= H);
+				} else if (old > 0) {
+					if (v < 0) {
+						v = 0;
+						clipped++;
+					}
+				} else if (v > 0)
 					reentered++;
 				else {
-					sigma[k] = 0;	/* G sigma is stale */
+					v = 0;	/* G sigma is stale */
 					clipped++;
 				}
+				sigma[k] = v;
 			}
-			disp[k] -= tau * r[k];
-			sum_s += sigma[k];
+			sum_s += v;
 		}
-		/* the conjugate directions need whole line-search steps */
-		conjugate = reentered == 0 && damp == 1;
-		set_changed = reentered > 0 || clipped > 0;
-		if (reentered || clipped)
+		if (reentry) {
+			/* the conjugate directions need whole line-search steps */
+			conjugate = reentered == 0 && damp == 1;
+			set_changed = reentered > 0 || clipped > 0;
+			if (set_changed)
+				stale = 1;
+		} else {
+			conjugate = changed == 0 && tau > 0;
+			if (changed || !(tau > 0))
+				stale = 1;
+		}
+		if (in.restore_load(s, p, sum_s, stale ? NULL : disp))
 			stale = 1;
-		f = pn / sum_s;
-#pragma omp parallel for schedule(static)
-		for (k = 0; k < n; k++) {
-			sigma[k] *= f;
-			disp[k] *= f;
-		}
 	}
 	res->iterations = it;
 	res->residual = residual;

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* solver_fire_adh.c - FIRE-GFMD with an adhesive law of adhesion.h: the
- * driver that runs the loop of solver_fire_adh_loop.c (which says what it
+ * driver that runs the FIRE of solver_fire_adh_pass.c (which says what it
  * solves and how) on the solver's own fields (periodic boundaries, a
  * half space or a layer), or hands the solve to the padded grid of
  * solver_fire_adh_free.c (free boundaries); then the state's pressures,
@@ -121,7 +121,7 @@ rc__fire_adh_solve(rc_solver *s, int control, double *pp, double delta,
 	} else if (control == RC__ADH_SUBSTRATE)
 		/* no shift: the state's mean sets the load (the loop) */
 		target = s->top - delta;
-	r = rc__adh_loop(&w, &law, control, &p, target, &s->opts, res);
+	r = rc__adh_relax(&w, &law, control, &p, target, &s->opts, res);
 	adh_finish(s, &law, p);
 	*pp = p;
 	return r;

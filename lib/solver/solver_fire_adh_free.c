@@ -189,7 +189,7 @@ rc__fire_adh_free_solve(rc_solver *s, const rc_adhesion *law, int control,
 	pad_start(s);
 	if (!control) {
 		p = *pp / spread;
-		r = rc__adh_loop(&w, law, 0, &p, 0, &s->opts, res);
+		r = rc__adh_relax(&w, law, 0, &p, 0, &s->opts, res);
 		for (c = 0, k = 0; k < pad->n; k++)
 			c += pad->u[k];
 		c = c / (double)pad->n - p / pad->stiffness0;
@@ -204,7 +204,7 @@ rc__fire_adh_free_solve(rc_solver *s, const rc_adhesion *law, int control,
 		s->el.stiffness[0] = pad->stiffness0;
 		w.mass0 = pad->stiffness0;
 		p = 0;
-		r = rc__adh_loop(&w, law, 0, &p, 0, &s->opts, res);
+		r = rc__adh_relax(&w, law, 0, &p, 0, &s->opts, res);
 		s->el.stiffness[0] = 0;
 		for (k = 0; k < pad->n; k++)
 			pad->u[k] += c;

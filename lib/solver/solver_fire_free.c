@@ -31,26 +31,26 @@
  *  3. a = K f (one pair of the nx x ny transform; the mean mode gets
  *     0: the mean of sigma is the load, held by step 5), then a = 0 off
  *     the active set.
- *  4. FIRE 2.0 as in solver_fire.c, with its parameters (same meaning:
+ *  4. FIRE 2.0 as in solver_fire_loop.c, with its parameters (same meaning:
  *     time in units of the common period) except the largest step
  *     (SIGMA_DT_MAX below: why; lowered further by the rules of
  *     STEP_SAFETY and FLIP_FRACTION), P = f.v.
  *  5. sigma += dt v; where sigma < 0: sigma = 0, v = 0; then sigma is
  *     rescaled to the load (PK's rescaling; it moves the state along the
  *     load constraint only).
- * Perfect plasticity (opts.hardness H; the model of solver_cg_plastic.c):
- * the same minimisation over the box 0 <= sigma <= H.  Step 1's level is
- * fitted over 0 < sigma < H (rc__plastic_level); step 2's active set
- * adds the points at H whose gap is open (g > 0: the force lowers them)
- * and leaves out those at H with g <= 0 (the bound takes the force);
- * step 5 clamps into [0, H] (v = 0 where clamped; no point moves by more
- * than H/2 in a step, see TRUST) and restores the load as the plastic CG
- * does (rc__plastic_restore_load: the pressures below H scaled, and its
- * fallback when they carry nothing).  The stopping rule and measure are
- * the plastic CG's (rc__plastic_check through rc__cg_next: periodic, the
- * residual rms(p + K u' - sigma) / p; free, the gap bound), so both
- * methods stop at comparable accuracy.  Without a hardness the rules
- * are those of sigma >= 0 alone (H = +inf), the free rows unchanged.
+ * The interaction (interaction.h: the wall, or with opts.hardness H the
+ * cap, perfect plasticity, the same minimisation over the box 0 <= sigma
+ * <= H) gives the start, step 1's level (the cap's fitted over 0 < sigma
+ * < H), step 2's active set (the cap's adds the points at H whose gap is
+ * open, g > 0: the force lowers them, and leaves out those at H with g <=
+ * 0: the bound takes the force), step 5's bound (clamped into [0, H], v
+ * = 0 where clamped; no point moves by more than the interaction's
+ * max_move, H/2, in a step) and its load restoration (the wall's one
+ * scale; the cap's scales the pressures below H, with its fallback when
+ * they carry nothing), as for the CG.  The stopping rule and measure are the CG's
+ * (rc__pressure_check through rc__cg_next: periodic, the residual
+ * rms(p + K u' - sigma) / p; free, the gap bound), so both methods stop
+ * at comparable accuracy.  The wall's rules are the cap's with H = +inf.
  * Measured (gfmd-solve --hardness 0.2 --pressure-abs 0.05, tol 1e-6,
  * surfgen defaults, seed 1; a_r 0.26, a_plastic 0.24): FIRE 33, 48, 44
  * iterations periodic and 34, 40, 42 free at 128^2, 256^2, 512^2; the
@@ -74,16 +74,7 @@
 #include <string.h>
 #include <fftw3.h>
 
-/* With a hardness, no pressure moves by more than TRUST H in one step (a
- * cap on each point's step, as the plastic CG's trust region): without
- * it, near p = H (128^2 self-affine, H = 0.2, p = 0.988 H) steps sent
- * every free point to a bound, the load restoration then spread the load
- * over all points and the iteration cycled (3000 iterations, residual
- * 0.6); with it 35.  TRUST 0.25 converged too, in 10-30 % more
- * iterations.  Without a hardness the cap is infinite: no effect. */
-#define TRUST	0.5
-
-/* FIRE's largest time step on pressures (solver_fire.c's RC_FIRE_DT_MAX,
+/* FIRE's largest time step on pressures (solver_fire_loop.c's RC_FIRE_DT_MAX,
  * 2, is for heights).  Why smaller: the mass K makes the frequency 1 for
  * every mode only when every point is active; on an active set A the
  * squared frequencies are the eigenvalues of K_AA G_AA, which are at
@@ -178,46 +169,22 @@ stiffness_times(rc_solver *s, const double *f)
 	return e->fft.real;
 }
 
-/* The stopping rule (solver_cg.c's, from the bound of step 2): periodic,
- * rc__cg_next with its periodic checks of the residual itself; free, the
- * check is the bound itself, so it runs only at the end. */
-static int
-stop_rule(rc_solver *s, double p, double bound, long it,
-    double (*check)(rc_solver *, double), double *residual, int *status)
-{
-	if (!s->free_bc)
-		return rc__cg_next(s, p, bound, it, check, residual, status);
-	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
-	    (s->opts.stop && *s->opts.stop) ||
-	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
-		*residual = check(s, p);
-		if (*residual <= s->opts.tol)
-			*status = 0;
-		return RC__CG_STOP;
-	}
-	return RC__CG_GO;
-}
-
 /* Long: the FIRE iteration on pressures, its passes sharing their sums
- * as in solver_fire.c. */
+ * as in solver_fire_loop.c. */
 int
 rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
 	size_t n = s->n, k;
-	/* the start at solver_fire.c's 1, stable while all points are
+	/* the start at solver_fire_loop.c's 1, stable while all points are
 	 * active (the start: uniform pressure), as measured below */
 	double dt = RC_FIRE_DT_START, alpha = RC_FIRE_ALPHA_START;
 	double residual = HUGE_VAL;
 	double *sigma = s->sigma, *u = s->u, *v = s->fire_vel, *f = s->scratch;
-	double k_max = rc__stiffness_max(s), pn = p * (double)n;
+	double k_max = rc__stiffness_max(s);
 	const double *h = s->height;
 	unsigned long small0 = s->el.n_r2c + s->el.n_c2r;
-	int plastic = rc_solver_opts_plastic(&s->opts);
-	/* no cap: the rules below reduce to those of sigma >= 0 alone */
-	double H = plastic ? s->opts.hardness : HUGE_VAL;
-	double max_move = TRUST * H;
-	double (*check)(rc_solver *, double) = plastic ? rc__plastic_check :
-	    rc__final_check_free;
+	rc__interaction in;
+	double H, max_move;
 	long it, npos = 0;
 	int status = 1, next;
 	struct step_bound bound = { 0, SIGMA_DT_MAX, SIGMA_DT_MAX };
@@ -235,10 +202,12 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		    "FIRE buffers)", n * (3 * sizeof(double) + 1));
 	}
 	memset(prev, 0, 3 * n * sizeof(double));
-	if (plastic)
-		rc__plastic_initial_pressure(s, p);
-	else
-		rc__cg_initial_pressure(s, p);
+	/* the wall: H = +inf, and the rules below are those of sigma >= 0
+	 * alone */
+	rc__interaction_of(s, &in);
+	H = in.H;
+	max_move = in.max_move;
+	in.start(s, p);
 	memset(v, 0, n * sizeof(double));
 	for (it = 0; ; it++) {
 		double c, ff = 0, power = 0, aa = 0, av = 0, vv = 0, sum = 0;
@@ -247,17 +216,19 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 		int restart;
 
 		rc__compliance(s, sigma, u);
-		on = plastic ? rc__plastic_level(s, &c) : rc__level(s, &c);
+		on = in.level(s, &c);
 #pragma omp parallel for reduction(+:ff, power) schedule(static)
 		for (k = 0; k < n; k++) {
 			double g = u[k] + c - h[k];
 
-			f[k] = rc__plastic_active(sigma[k], g, H) ? -g : 0;
+			f[k] = rc__active(sigma[k], g, H) ? -g : 0;
 			ff += f[k] * f[k];
 			power += f[k] * v[k];
 		}
-		next = stop_rule(s, p, k_max * sqrt(ff / (double)n) / p, it,
-		    check, &residual, &status);
+		/* free: the check is the bound itself, so it runs only at
+		 * the end */
+		next = rc__cg_next(s, &in, p, k_max * sqrt(ff / (double)n) / p,
+		    it, !s->free_bc, &residual, &status);
 		if (next == RC__CG_STOP)
 			break;
 		if (next == RC__CG_STALE)
@@ -332,12 +303,7 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			v[k] = vk;
 			sum += sk;
 		}
-		if (plastic)
-			rc__plastic_restore_load(s, p, NULL);
-		else if (sum > 0)
-#pragma omp parallel for schedule(static)
-			for (k = 0; k < n; k++)
-				sigma[k] *= pn / sum;
+		in.restore_load(s, p, sum, NULL);
 	}
 	/* Free: fft_pairs in padded pairs (solver.c counts those), the
 	 * unpadded pairs as a quarter each.  Periodic: both operators are

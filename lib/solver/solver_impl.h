@@ -6,13 +6,18 @@
  *     (displacement control), solver_fire_adh.c and
  *     solver_fire_adh_free.c (the adhesive solve on periodic and free
  *     boundaries);
- *   minimisers: solver_fire.c (FIRE in heights), solver_fire_free.c
- *     (FIRE on pressures), solver_cg.c, solver_cg_plastic.c (CG),
- *     solver_fire_adh_loop.c (adhesive FIRE in heights);
- *   the operator (solver_operator.c: G, FIRE's mass, the stiffness
- *     scale), the interactions (solver_wall.c: the hard wall of the
- *     pressure methods; solver_hardness.c: the hardness cap; adhesion.c:
- *     the adhesive laws) and the convergence measure (solver_measure.c);
+ *   minimisers: solver_fire.c (FIRE in heights against the hard wall),
+ *     solver_fire_free.c (FIRE on pressures), solver_cg.c (CG),
+ *     solver_fire_adh_pass.c (FIRE in heights with an adhesive law); the
+ *     pressure methods, CG and FIRE on pressures, are each one loop over
+ *     the interface of interaction.h;
+ *   the FIRE loop in heights that the two FIRE-in-heights files run with
+ *     their interaction's passes (solver_fire_loop.c, rc__fire_parts);
+ *     the operator (solver_operator.c: G, FIRE's mass, the stiffness
+ *     scale), the interactions (of the pressure methods, interaction.h:
+ *     solver_wall.c, the hard wall; solver_hardness.c, the hardness cap;
+ *     and adhesion.c: the adhesive laws) and the convergence measure
+ *     (solver_measure.c, with the pressure methods' one check);
  *   below them elastic*.c, layer.c, love.c, fft.c. */
 #ifndef RC_SOLVER_IMPL_H
 #define RC_SOLVER_IMPL_H
@@ -22,6 +27,7 @@
 #include "elastic.h"
 #include "elastic_free.h"
 #include "solver.h"
+#include "interaction.h"
 
 /* Adhesion on free boundaries (solver_fire_adh_free.c): the state on the
  * padded 2nx x 2ny grid, whose operator is then s->el. */
@@ -113,8 +119,8 @@ int rc__fire_alloc(rc_solver *s, rc_err *err);
 /* FIRE's a = M^-1 f_eff with m_q = k_q of e, m_0 = mass0
  * (solver_operator.c); e's real buffer, returned. */
 double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
-/* FIRE with the adhesive law (solver_fire_adh.c, its loop
- * solver_fire_adh_loop.c): load control at p
+/* FIRE with the adhesive law (solver_fire_adh.c, its interaction
+ * solver_fire_adh_pass.c): load control at p
  * (RC__ADH_LOAD), the mean height held at max h - delta (RC__ADH_LEVEL;
  * the pressure found into *p) or, a periodic layer, its rigid substrate
  * held at approach delta (RC__ADH_SUBSTRATE: the mean mode on the spring
@@ -122,15 +128,15 @@ double *rc__fire_mass_weighted(rc_elastic *e, const double *f, double mass0);
 enum { RC__ADH_LOAD = 0, RC__ADH_LEVEL = 1, RC__ADH_SUBSTRATE = 2 };
 int rc__fire_adh_solve(rc_solver *s, int control, double *p, double delta,
     rc_solve_result *res, rc_err *err);
-/* What that loop runs on: the operator's grid of n points, of which
- * n_act interact (the rest: h = -inf); mass0 > 0 the mean mode's mass
- * when the rigid level is held (free boundaries: p = 0, the load the sum
- * of the tractions, which then scales the residual); else load
- * control's rule (solver_fire.c).  The loop: control 0, p on
- * every one of the n points; control 1, <u> held at target (periodic
- * only), p found; control 2 (periodic only), p = spring (<u> - target)
- * from the state, spring = k_0 > 0 of the layer (unused by the other
- * two).  Status as rc_solver_solve. */
+/* What the adhesive FIRE runs on (solver_fire_adh_pass.c): the
+ * operator's grid of n points, of which n_act interact (the rest: h =
+ * -inf); mass0 > 0 the mean mode's mass when the rigid level is held
+ * (free boundaries: p = 0, the load the sum of the tractions, which then
+ * scales the residual); else load control's rule (rc__fire_mass0).
+ * Control 0, p on every one of the n points; control 1, <u> held at
+ * target (periodic only), p found; control 2 (periodic only), p = spring
+ * (<u> - target) from the state, spring = k_0 > 0 of the layer (unused by
+ * the other two).  Status as rc_solver_solve. */
 typedef struct rc__adh_view {
 	rc_elastic *el;
 	size_t n;
@@ -143,7 +149,7 @@ typedef struct rc__adh_view {
 	rc__watch *watch;
 } rc__adh_view;
 struct rc_adhesion;
-int rc__adh_loop(const rc__adh_view *w, const struct rc_adhesion *law,
+int rc__adh_relax(const rc__adh_view *w, const struct rc_adhesion *law,
     int control, double *p, double target, const rc_solver_opts *opts,
     rc_solve_result *res);
 /* Free boundaries (solver_fire_adh_free.c): the padded operator and
@@ -154,68 +160,40 @@ void rc__adh_free_release(rc_solver *s);
 size_t rc__adh_free_bytes(const rc_solver *s);
 int rc__fire_adh_free_solve(rc_solver *s, const struct rc_adhesion *law,
     int control, double *p, double delta, rc_solve_result *res);
-/* The hard wall of the pressure methods (solver_wall.c): the rigid level
- * c = <h - G sigma> over {sigma > 0} (returns its size); on free
- * boundaries the convergence measure and the admissible u' from s->u =
- * G sigma (leaves u', the contact set, level and energy).  The stiffness
- * scale of that measure (solver_operator.c). */
-size_t rc__level(const rc_solver *s, double *c);
-double rc__final_check_free(rc_solver *s, double p);
-/* That measure, max(k_max rms(u' - u) / p, |<sigma> - p| / p), from the
- * sums over all points of (u' - u)^2, sigma and sigma u; sets the
- * elastic energy (1/2) <sigma u>.  Both CG variants and FIRE on
- * pressures (solver_wall.c). */
-double rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
-    double sum_e);
-double rc__stiffness_max(const rc_solver *s);
-/* FIRE on pressures (solver_fire_free.c): free boundaries, and a
- * hardness on either boundary kind. */
+/* The pressure methods (the CG, solver_cg.c, one loop for the wall and
+ * the cap; FIRE on pressures, solver_fire_free.c: free boundaries, and a
+ * hardness on either boundary kind) run on the interaction of s
+ * (interaction.h): the cap with a hardness, else the wall. */
+static inline void
+rc__interaction_of(const rc_solver *s, rc__interaction *in)
+{
+	if (rc_solver_opts_plastic(&s->opts))
+		rc__cap(s, in);
+	else
+		rc__wall(s, in);
+}
 int rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res,
     rc_err *err);
 int rc__cg_alloc(rc_solver *s, rc_err *err);
 /* The operator (solver_operator.c): out = G x; G_00 of the periodic
- * compliance.  The start pressure of mean p (unbounded) of both pressure
- * methods (solver_wall.c). */
+ * compliance; the stiffness scale of the free boundaries' measure. */
 void rc__compliance(rc_solver *s, const double *x, double *out);
 double rc__self_compliance(const rc_elastic *e);
-void rc__cg_initial_pressure(rc_solver *s, double p);
-/* The stopping rule of the pressure methods (solver_measure.c: both CG
- * variants and FIRE on pressures), after iteration it
- * has its gap bound: STOP (the final check ran: *residual, and *status 0
- * if it met opts.tol), STALE (a periodic check of the residual itself
- * ran and missed: the iterate must be recomputed) or GO. */
+double rc__stiffness_max(const rc_solver *s);
+/* The wall's start pressure (solver_wall.c), which the cap's clips. */
+void rc__wall_start(rc_solver *s, double p);
+/* The stopping rule of the pressure methods (solver_measure.c), after
+ * iteration it has its gap bound: STOP (rc__pressure_check ran:
+ * *residual, and *status 0 if it met opts.tol), STALE (recheck: a
+ * periodic check of the residual itself ran and missed: the iterate must
+ * be recomputed) or GO. */
 enum { RC__CG_GO, RC__CG_STOP, RC__CG_STALE };
-int rc__cg_next(rc_solver *s, double p, double bound, long it,
-    double (*check)(rc_solver *, double), double *residual, int *status);
-/* CG with the pressure bounded by opts.hardness (solver_cg_plastic.c). */
-int rc__cg_plastic_solve(rc_solver *s, double p, rc_solve_result *res,
-    rc_err *err);
-/* The hardness cap (solver_hardness.c), shared by that CG and FIRE on
- * pressures with a hardness (solver_fire_free.c): the level c fitted over
- * 0 < sigma < H (returns the count of sigma > 0); the load restored to
- * mean p within [0, H] (disp: G sigma kept in step, or NULL; returns 1 if
- * G sigma is stale); the convergence measure of (u', sigma) from s->u =
- * G sigma (leaves u', the contact set, level and energy). */
-size_t rc__plastic_level(const rc_solver *s, double *c);
-int rc__plastic_restore_load(rc_solver *s, double p, double *disp);
-double rc__plastic_check(rc_solver *s, double p);
-/* The start of both: the CG's (rc__cg_initial_pressure) clipped at H,
- * the load restored. */
-void rc__plastic_initial_pressure(rc_solver *s, double p);
+int rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
+    double bound, long it, int recheck, double *residual, int *status);
 
-/* Whether a point with pressure sigma and gap g takes part in a bounded
- * step: free (0 < sigma < H), or its force f = -g pointing into the box
- * (at zero and penetrating, or at H with an open gap). */
-static inline int
-rc__plastic_active(double sigma, double g, double H)
-{
-	return (sigma > 0 && sigma < H) || (sigma <= 0 && g < 0) ||
-	    (sigma >= H && g > 0);
-}
-
-/* FIRE's parameters, shared by its three loops (solver_fire.c, which
- * says what each is and how it was tuned; solver_fire_free.c;
- * solver_fire_adh.c). */
+/* FIRE's parameters, shared by its two loops (solver_fire_loop.c, which
+ * says what each is and how it was tuned, in heights; solver_fire_free.c
+ * on pressures). */
 #define RC_FIRE_DT_START	1.0
 #define RC_FIRE_DT_MAX		2.0
 #define RC_FIRE_N_MIN		1
@@ -226,8 +204,8 @@ rc__plastic_active(double sigma, double g, double H)
 #define RC_FIRE_M0_SCALE	2.0
 #define RC_FIRE_PROGRESS_EVERY	50
 
-/* FIRE's schedule and mixing, written once for its loops (solver_fire.c
- * says what they are): after a step of power P, dt and alpha grow when
+/* FIRE's schedule and mixing, written once for its loops
+ * (solver_fire_loop.c says what they are): after a step of power P, dt and alpha grow when
  * P > 0 (after RC_FIRE_N_MIN such steps in a row; dt up to dt_max), else
  * the step restarts (v = 0; returns 1) with a smaller dt and alpha reset;
  * the FIRE 2.0 mixing v' = mix_v (v + dt a) + mix_a a, |v'| = |v + dt a|,
@@ -267,5 +245,79 @@ rc__fire_mix(const rc__fire *fs, double aa, double av, double vv,
 		*mix_a = fs->alpha * sqrt(vn2 / aa);
 	}
 }
+
+/* The mean mode's mass of FIRE in heights while the load is prescribed
+ * (solver_fire.c says why): M0_SCALE k_min sqrt(max(n_c, 1) / N) from
+ * the contact count n_c of N points. */
+static inline double
+rc__fire_mass0(double k_min, double n_contact, double points)
+{
+	return RC_FIRE_M0_SCALE * k_min *
+	    sqrt((n_contact > 0 ? n_contact : 1) / points);
+}
+
+/* The FIRE loop in heights (solver_fire_loop.c), over an operator (an
+ * rc_elastic: K and the mass-weighting M^-1, m_q = k_q) and an
+ * interaction given as passes.  A pass runs over the points
+ * k0 <= k < k1 (called once per range of points: never per point) and
+ * adds its sums to sum[0 .. RC__FIRE_SUMS-1] and lowers *least (this
+ * process's; the sums the loop completes over a distributed operator's
+ * ranks); after each pass a hook sees the sums over the grid:
+ *   force (x = f holding K u): f_eff = -(p + K u - the interaction's
+ *     traction) into f, and the contact set C (held by the wall: the
+ *     loop's a = 0 there) into contact; forced fills
+ *     the report (the residual, the power f_eff . v, the contact count,
+ *     the mean mode's mass for this step, whether to halt);
+ *   mixing (the loop's own, x = a = M^-1 f_eff): |a|^2, a.v, |v|^2
+ *     into sum[0..2] with a = 0 on C and v = 0 on a restart; with
+ *     mean_sums the sums of a and v into sum[3..4]; mixed (may be NULL)
+ *     makes the first three those of the step the update takes;
+ *   update (x = a): v' = mix_v (v + dt a) + mix_a a, u += dt v', the
+ *     clamp at h; updated (may be NULL) follows it.
+ * The plain path runs a pass on chunks of grain points, or with grain 0
+ * on each thread's share; on the blocked transforms (fft.h), when fuse
+ * is set, on each block of rows between its row transforms (the update
+ * must then leave u final: no updated hook).  Returns 0 converged
+ * (residual <= opts.tol), RC__FIRE_HALTED (the report's halt), else 1
+ * (out of iterations, stopped, stalled); *iterations, *residual. */
+#define RC__FIRE_SUMS	6
+enum { RC__FIRE_HALTED = 2 };
+typedef struct rc__fire_step {
+	double dt;
+	int restart;		/* P <= 0: v = 0 before this step */
+	double mix_v, mix_a;	/* v' = mix_v (v + dt a) + mix_a a */
+} rc__fire_step;
+typedef struct rc__fire_report {
+	double residual;
+	double power;		/* f_eff . v */
+	double contact;		/* points in contact */
+	double mass0;		/* the mean mode's mass of this step */
+	int halt;		/* end the solve before this step */
+} rc__fire_report;
+typedef struct rc__fire_parts {
+	rc_elastic *el;		/* the operator */
+	size_t n;		/* its points (this process's) */
+	double points;		/* the points that interact (the progress
+				 * report's contact share) */
+	const double *u;	/* the heights (the update's) */
+	double *f;		/* n doubles for the force where the
+				 * operator's own buffer cannot hold it */
+	const double *v;	/* the velocities (the mixing's) */
+	const unsigned char *contact;	/* C, of the force pass */
+	void *ctx;		/* the interaction's state */
+	size_t grain;
+	int fuse;
+	int mean_sums;
+	void (*force)(void *ctx, double *x, const rc__fire_step *st,
+	    size_t k0, size_t k1, double *sum, double *least);
+	void (*update)(void *ctx, double *x, const rc__fire_step *st,
+	    size_t k0, size_t k1, double *sum, double *least);
+	void (*forced)(void *ctx, const double *sum, double least,
+	    rc__fire_report *r);
+	void (*mixed)(void *ctx, double *sum);
+	void (*updated)(void *ctx, const double *sum);
+} rc__fire_parts;
+int rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
+    rc__watch *watch, long *iterations, double *residual);
 
 #endif

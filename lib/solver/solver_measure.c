@@ -56,18 +56,75 @@ rc__residual(const rc_solver *s, double p, double sum_d2, double sum_sigma)
 	return force > load ? force : load;
 }
 
+/* The free boundaries' measure (solver_cg.c says why it bounds the
+ * residual), from the sums over all points of (u' - u)^2, sigma and
+ * sigma u; sets the elastic energy (1/2) <sigma u>. */
+static double
+gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
+    double sum_e)
+{
+	double n = (double)s->n, force, load;
+
+	s->energy = 0.5 * sum_e / n;
+	force = rc__stiffness_max(s) * sqrt(sum_d2 / n) / p;
+	load = fabs(sum_s / n - p) / p;
+	return force > load ? force : load;
+}
+
+double
+rc__pressure_check(rc_solver *s, const rc__interaction *in, double p)
+{
+	size_t k, n = s->n;
+	double c, sum_d2 = 0, sum_s = 0, sum_e = 0, H = in->H;
+	double *u = s->u, *ku = s->el.fft.real;
+	const double *h = s->height, *sigma = s->sigma;
+
+	in->level(s, &c);
+	s->level = c;
+	if (s->free_bc) {
+#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
+		for (k = 0; k < n; k++) {
+			double v = u[k] + c;
+			double up = rc__admissible(v, h[k], sigma[k], H);
+
+			s->contact[k] = sigma[k] > 0;
+			sum_d2 += (up - v) * (up - v);
+			sum_s += sigma[k];
+			sum_e += sigma[k] * u[k];
+			u[k] = up;
+		}
+		return gap_measure(s, p, sum_d2, sum_s, sum_e);
+	}
+#pragma omp parallel for schedule(static)
+	for (k = 0; k < n; k++) {
+		s->contact[k] = sigma[k] > 0;
+		u[k] = rc__admissible(u[k] + c, h[k], sigma[k], H);
+	}
+	rc_elastic_force(&s->el, u, ku);
+#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
+	for (k = 0; k < n; k++) {
+		double d = p + ku[k] - sigma[k];
+
+		sum_d2 += d * d;
+		sum_s += sigma[k];
+		sum_e += ku[k] * u[k];
+	}
+	s->energy = 0.5 * sum_e / (double)n;
+	return rc__residual(s, p, sum_d2, sum_s);
+}
+
 /* The bound can stay far above the residual: the pressure methods check
  * the residual itself every CHECK_EVERY iterations (rc__cg_next). */
 #define CHECK_EVERY	100
 
 int
-rc__cg_next(rc_solver *s, double p, double bound, long it,
-    double (*check)(rc_solver *, double), double *residual, int *status)
+rc__cg_next(rc_solver *s, const rc__interaction *in, double p,
+    double bound, long it, int recheck, double *residual, int *status)
 {
 	if (bound <= s->opts.tol || it >= s->opts.max_iter ||
 	    (s->opts.stop && *s->opts.stop) ||
 	    rc__watch_stalled(&s->watch, s->opts.stall_window, it, bound)) {
-		*residual = check(s, p);
+		*residual = rc__pressure_check(s, in, p);
 		if (*residual <= s->opts.tol)
 			*status = 0;
 		return RC__CG_STOP;
@@ -75,8 +132,8 @@ rc__cg_next(rc_solver *s, double p, double bound, long it,
 	/* The bound can stay far above the residual (seen on strongly
 	 * warped surfaces: residual below tol for thousands of
 	 * iterations); check the residual itself now and then. */
-	if (it > 0 && it % CHECK_EVERY == 0) {
-		*residual = check(s, p);
+	if (recheck && it > 0 && it % CHECK_EVERY == 0) {
+		*residual = rc__pressure_check(s, in, p);
 		if (*residual <= s->opts.tol) {
 			*status = 0;
 			return RC__CG_STOP;

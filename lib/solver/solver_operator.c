@@ -5,7 +5,7 @@
  * pressure (the largest k_q; free boundaries: that of the same grid were
  * it periodic, k_max = (pi/2) E* sqrt(dx^-2 + dy^-2), a layer times its
  * phi at that q, layer.h), G_00, and FIRE's mass-weighted force
- * (M^-1 f, m_q = k_q; solver_fire.c says why).
+ * (M^-1 f, m_q = k_q; solver_fire_loop.c says why).
  */
 #include "solver_impl.h"
 

@@ -11,7 +11,7 @@
  *   1e-4     29   0                              59   0
  *   1e-6     43   0                              73   0
  *   1e-9     65   0                              94   0
- * (FIRE iterations cost two FFT pairs, CG's one or two: solver_fire.c,
+ * (FIRE iterations cost two FFT pairs, CG's one or two: solver_fire_loop.c,
  * solver_cg.c.)
  * The default 1e-6 leaves a margin of two decades over the first
  * tolerance at which every contact point is right.

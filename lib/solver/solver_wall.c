@@ -1,19 +1,16 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* solver_wall.c - the hard wall as the pressure methods (CG,
- * solver_cg.c; FIRE on pressures, solver_fire_free.c) see it: the rigid
- * level c = <h - G sigma> over the contact set, the admissible heights
- * u' (h on contact, max(G sigma + c, h) off it) and their gap measure
- * max(k_max rms(u' - u) / p, |<sigma> - p| / p) (solver_cg.c says why it
- * bounds the residual), the check on free boundaries, and the start
- * pressure.
+/* solver_wall.c - the hard wall (sigma >= 0) as an interaction of the
+ * pressure methods (interaction.h): the start pressure, the rigid level
+ * c = <h - G sigma> over the contact set, and the load restored by one
+ * scale.  Its pointwise rules are interaction.h's with H = +inf.
  */
 #include "solver_impl.h"
 
 #include <math.h>
 
-/* Rigid level c = <h - G sigma> over I_c; returns |I_c|. */
-size_t
-rc__level(const rc_solver *s, double *c)
+/* Rigid level c = <h - G sigma> over I_c = {sigma > 0}; returns |I_c|. */
+static size_t
+wall_level(const rc_solver *s, double *c)
 {
 	size_t k, on = 0;
 	double sum = 0;
@@ -29,48 +26,29 @@ rc__level(const rc_solver *s, double *c)
 	return on;
 }
 
-/* Free boundaries: the measure of the top of this file for (u', sigma);
- * leaves u' in s->u, the contact set, the level c and the elastic energy
- * (1/2) <sigma w>.  s->u holds w = G sigma on entry. */
-double
-rc__final_check_free(rc_solver *s, double p)
+/* Mean p by one scale of sigma (and of G sigma, which stays in step). */
+static int
+wall_restore_load(rc_solver *s, double p, double sum, double *disp)
 {
 	size_t k, n = s->n;
-	double c, sum_d2 = 0, sum_s = 0, sum_e = 0;
-	double *u = s->u;
-	const double *h = s->height, *sigma = s->sigma;
+	double f, *sigma = s->sigma;
 
-	rc__level(s, &c);
-	s->level = c;
-#pragma omp parallel for reduction(+:sum_d2, sum_s, sum_e) schedule(static)
+	if (!(sum > 0))
+		return 0;
+	f = p * (double)n / sum;
+#pragma omp parallel for schedule(static)
 	for (k = 0; k < n; k++) {
-		double v = u[k] + c, up = sigma[k] > 0 ? h[k] : (v > h[k] ? v : h[k]);
-
-		s->contact[k] = sigma[k] > 0;
-		sum_d2 += (up - v) * (up - v);
-		sum_s += sigma[k];
-		sum_e += sigma[k] * u[k];
-		u[k] = up;
+		sigma[k] *= f;
+		if (disp)
+			disp[k] *= f;
 	}
-	return rc__gap_measure(s, p, sum_d2, sum_s, sum_e);
-}
-
-double
-rc__gap_measure(rc_solver *s, double p, double sum_d2, double sum_s,
-    double sum_e)
-{
-	double n = (double)s->n, force, load;
-
-	s->energy = 0.5 * sum_e / n;
-	force = rc__stiffness_max(s) * sqrt(sum_d2 / n) / p;
-	load = fabs(sum_s / n - p) / p;
-	return force > load ? force : load;
+	return 0;
 }
 
 /* Initial pressure: the previous solution rescaled, the pressure a loaded
  * displacement implies, or uniform. */
 void
-rc__cg_initial_pressure(rc_solver *s, double p)
+rc__wall_start(rc_solver *s, double p)
 {
 	size_t k, n = s->n;
 	double *sigma = s->sigma;
@@ -91,4 +69,15 @@ rc__cg_initial_pressure(rc_solver *s, double p)
 		}
 	}
 	rc__sigma_to_load(s, p);
+}
+
+/* The CG runs Polonsky & Keer's rules with re-entry (solver_cg.c). */
+void
+rc__wall(const rc_solver *s, rc__interaction *in)
+{
+	(void)s;
+	*in = (rc__interaction){ .H = HUGE_VAL, .start = rc__wall_start,
+	    .level = wall_level, .restore_load = wall_restore_load,
+	    .max_move = HUGE_VAL,
+	    .plastic_fraction = NULL, .cg_reentry = 1 };
 }

@@ -120,8 +120,8 @@ fi
 layer_of() {
 	case ${1##*/} in
 	solver.o|solver_approach.o|solver_fire_adh.o|solver_fire_adh_free.o) echo "4 drivers" ;;
-	solver_fire.o|solver_fire_free.o|solver_cg.o|solver_cg_plastic.o|solver_fire_adh_loop.o) echo "3 minimisers" ;;
-	solver_operator.o|solver_wall.o|solver_hardness.o|solver_measure.o|adhesion.o) echo "2 parts" ;;
+	solver_fire.o|solver_fire_free.o|solver_cg.o|solver_fire_adh_pass.o) echo "3 minimisers" ;;
+	solver_fire_loop.o|solver_operator.o|solver_wall.o|solver_hardness.o|solver_measure.o|adhesion.o) echo "2 parts" ;;
 	solver_opts.o|elastic*.o|layer.o|love.o|fft.o|threads.o|rc_err.o) echo "1 below" ;;
 	*) echo "" ;;
 	esac

@@ -100,11 +100,13 @@ fi
 
 # --- bench/field.sh on a small folder -------------------------------------------
 # One file read right, one whose manifest row says another rms (wrong), one
-# refused with the reader's message; the summary counts them.
+# refused with the reader's message, a line scan not uniformly spaced read
+# as it is (unchecked, its hrms in the note); the summary counts them.
 mkdir corpus
 cp "$D/xyz-1-different-order.txt" corpus/a.txt
 cp "$D/xyz-1-different-order.txt" corpus/b.txt
 printf 'This is no surface\n' >corpus/c.txt
+cp "$D/st_xy-3.txt" corpus/d.txt
 printf 'file\tgwyddion_reads\tchannel\ttitle\tnx\tny\tlx\tly\txy_unit\tz_unit\tmasked\trms\n' >man.tsv
 printf 'a.txt\tyes\t1\t\t4\t4\t4.0\t4.0\t\t\t0\t0.33071891388307384\n' >>man.tsv
 printf 'b.txt\tyes\t1\t\t4\t4\t4.0\t4.0\t\t\t0\t0.34\n' >>man.tsv
@@ -115,8 +117,10 @@ check "a.txt: grid 4x4" [ "$(col rows.tsv grid 1)" = 4x4 ]
 check "b.txt: rms wrong" [ "$(col rows.tsv read 2)" = "wrong(rms)" ]
 check "c.txt: refused" [ "$(col rows.tsv read 3)" = refused ]
 check "... with the reader's message" grep -q "is text and no numbers follow" rows.tsv
+check "d.txt (not uniformly spaced): read, unchecked, 11x1" [ "$(col rows.tsv read 4) $(col rows.tsv grid 4)" = "unchecked 11x1" ]
+check "... its hrms as it is in the note" grep -q "not uniformly spaced, read as it is: lx 9, hrms 0.18425693279752223" rows.tsv
 it=$(col rows.tsv it_0.01 1)
 check "a.txt: p* = 0.01 converged (iterations $it, no *)" sh -c 'case $1 in ""|*[!0-9]*) exit 1 ;; esac' - "$it"
-check "the summary line" grep -q '^# files 3: read 2 (right 1, wrong 1, unchecked 0), refused 1 (0 of them read by Gwyddion); solved: converged 2, not converged 0' field.out
+check "the summary line" grep -q '^# files 4: read 3 (right 1, wrong 1, unchecked 1), refused 1 (0 of them read by Gwyddion); solved: converged 2, not converged 0' field.out
 
 summary

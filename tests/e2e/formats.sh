@@ -186,15 +186,17 @@ check "a grid without a title lists '-'" [ "$(chan a.surf 1 title)" = - ]
 
 # A zip that is no x3p: contact.engineering's container (meta.yml) of
 # two measurements, one without units (meta.yml's nm) and one x-z
-# profile not uniformly spaced (read with --uniform); one with no
+# profile not uniformly spaced (read with --uniform, by surfstat as it
+# is); one with no
 # measurement is refused saying so (tests/test_zipped.c has the rest).
 if command -v python3 >/dev/null 2>&1; then
 	printf '0 1\n1 2\n2 3\n3 5\n' >m1.txt
 	printf '0 1\n1 2\n3 3\n4 5\n' >m2.txt
 	printf 'surfaces:\n- topographies:\n  - name: flat one\n    datafile: {original: m1.txt}\n    unit: nm\n  - name: uneven\n    datafile: {original: m2.txt}\n    unit: um\n' >meta.yml
 	python3 -c 'import zipfile; z = zipfile.ZipFile("ce2.zip", "w"); [z.write(f) for f in ("meta.yml", "m1.txt", "m2.txt")]; z.close()'
-	check_status "a container with a non-uniform profile: exit 1" 1 surfstat --channels ce2.zip
+	check_status "a container with a non-uniform profile: surfwarp refuses it (exit 1)" 1 surfwarp -q --channel uneven -o un.txt ce2.zip
 	check "... naming the measurement and --uniform" grep -q "'uneven' (m2.txt): .*--uniform" "$T_TMP/stderr"
+	check "surfstat lists it as it is: 4 points over the x span, 4 um" [ "$(surfstat --channels ce2.zip | awk -F'\t' 'NR == 3 { print $3, $5, $7 }')" = "4 4 um" ]
 	surfstat --uniform --channels ce2.zip >ce2.tsv
 	check "--channels lists the two measurements by name" [ "$(cut -f2 ce2.tsv | tr '\n' ,)" = "title,flat one,uneven," ]
 	check "... in meta.yml's units" [ "$(cut -f7 ce2.tsv | tr '\n' ,)" = "unit,nm,um," ]
@@ -204,6 +206,6 @@ if command -v python3 >/dev/null 2>&1; then
 	check_status "a container listing no measurement: exit 1" 1 surfstat ce.zip
 	check "the message says so" grep -q "contact.engineering container: meta.yml lists no topographies" "$T_TMP/stderr"
 else
-	skip 8 "python3 not installed: containers zipped by python's zipfile (apt-get install python3)"
+	skip 9 "python3 not installed: containers zipped by python's zipfile (apt-get install python3)"
 fi
 summary

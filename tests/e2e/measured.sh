@@ -216,7 +216,7 @@ surfstat -q profile.txt >p.tsv
 check "an x-z profile of 50 points is a 50 x 1 grid" [ "$(col p.tsv nx) $(col p.tsv ny)" = "50 1" ]
 check_rel "... of length 50 dx" "$(col p.tsv lx)" 1 1e-12
 awk 'BEGIN { for (k = 0; k < 50; k++) printf "%.6g %.17g\n", 0.02 * k * k, k }' >nonuniform.txt
-check_status "a non-uniform profile is refused" 1 surfstat -q nonuniform.txt
+check_status "a non-uniform profile is refused where a grid is needed" 1 surfwarp -q -o nu.surf nonuniform.txt
 check "... saying why" grep -q "x is not uniformly spaced" "$T_TMP/stderr"
 
 # --- numpy ----------------------------------------------------------------------

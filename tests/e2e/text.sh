@@ -4,7 +4,8 @@
 # its German Gwyddion export (12.34 um by 5678.9 nm, heights as in the
 # file), its UTF-16 CSV with an index column (8 points), its one-column
 # profile (heights 1..9, length from -L); gzip and UTF-16 through a pipe;
-# its Mitutoyo workbook mocks and non-uniform xy-2.txt (--uniform);
+# its Mitutoyo workbook mocks and non-uniform xy-2.txt (as they are, or
+# --uniform);
 # an HDF5 file that is not in the contact.engineering layout is named so.
 . "$RC_TOP/tests/e2e/lib.sh"
 cd "$T_TMP" || exit 1
@@ -49,16 +50,18 @@ check "one column: heights 1..9" [ "$(grep -v '^#' s.txt | tr '\n' ' ')" = "1 2 
 
 # SurfaceTopography's Mitutoyo SurfTest mock (test/io/test_mitutoyo.py):
 # 960 points, 480 um, heights in um of rms 0.16866328079293708 (about
-# their mean: surfstat's Sq); the non-uniform mock and xy-2.txt only
-# with --uniform.
+# their mean: surfstat's Sq); the non-uniform mock and xy-2.txt read
+# by surfstat as they are (its rms 0.1371261153644389 um), by the tools
+# that need a grid only with --uniform.
 m=$D/st_mitutoyo_mock.xlsx
 check "Mitutoyo workbook: 960 x 1 points" [ "$(chan "$m" nx) $(chan "$m" ny)" = "960 1" ]
 check "Mitutoyo workbook: 0.48 mm, heights in um" [ "$(chan "$m" lx) $(chan "$m" unit) $(chan "$m" z_unit)" = "0.48 mm um" ]
 surfstat -q --unit um --iso "$m" >m.tsv
 check_rel "Mitutoyo workbook: Sq = SurfaceTopography's rms" "$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } { print $c["Sq"] }' m.tsv)" 0.16866328079293708 1e-12
-refused "Mitutoyo non-uniform mock: refused naming --uniform" 'x is not uniformly spaced.*--uniform' surfstat "$D/st_mitutoyo_nonuniform_mock.xlsx"
+refused "Mitutoyo non-uniform mock: gfmd-solve refuses it naming --uniform" 'x is not uniformly spaced.*--uniform' gfmd-solve -p 0.01 "$D/st_mitutoyo_nonuniform_mock.xlsx"
+check_rel "... surfstat's hrms as it is: SurfaceTopography's 0.1371261153644389 um" "$(surfstat -q --unit um "$D/st_mitutoyo_nonuniform_mock.xlsx" | awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; next } { print $c["hrms"] }')" 0.1371261153644389 1e-12
 check "... read with --uniform: 960 points over 0.48 mm" [ "$(surfstat --uniform --channels "$D/st_mitutoyo_nonuniform_mock.xlsx" | awk -F'\t' 'NR == 2 { print $3, $5 }')" = "960 0.48" ]
-refused "xy-2.txt (x-z in um, not uniform): refused naming --uniform" '[-]-uniform resamples' surfstat "$D/st_xy-2.txt"
+refused "xy-2.txt (x-z in um, not uniform): gfmd-solve refuses it naming --uniform" '[-]-uniform resamples' gfmd-solve -p 0.01 "$D/st_xy-2.txt"
 check "... with --uniform: 24 points, in um" [ "$(surfstat --uniform --channels "$D/st_xy-2.txt" | awk -F'\t' 'NR == 2 { print $3, $7 }')" = "24 um" ]
 
 # The nonsense text of SurfaceTopography's examples, written here.
