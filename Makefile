@@ -20,8 +20,8 @@ PKG_CONFIG ?= pkg-config
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
 # libnetcdf, libzip, libxml2 and libyaml are compiled against but loaded
 # only when a file that needs them is read or written (lib/io_nc.c,
-# lib/io_dl.h say why): not linked; each soname from the shared library
-# pkg-config points to.  The tests that make zips themselves link them.
+# lib/io_dl_internal.h say why): not linked; each soname from the shared
+# library pkg-config points to.  The tests that make zips themselves link them.
 PKGS_DLOPEN = netcdf libzip libxml-2.0 yaml-0.1
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(filter-out $(PKGS_DLOPEN),$(PKGS)) 2>/dev/null)
 DLOPEN_LIBS := $(shell $(PKG_CONFIG) --libs $(filter-out netcdf,$(PKGS_DLOPEN)) 2>/dev/null)

@@ -34,7 +34,7 @@
 #include <strings.h>
 #include <yaml.h>
 #include <zip.h>
-#include "io_dl.h"
+#include "io_dl_internal.h"
 
 #define CE_META_MAX ((uint64_t)16 << 20)
 #define CE_TOTAL_MAX ((uint64_t)1 << 30)

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* io_dl.c - loading libzip, libxml2 and libyaml on first use (io_dl.h). */
+/* io_dl.c - loading libzip, libxml2 and libyaml on first use
+ * (io_dl_internal.h). */
 #define RC_IO_DL_C
-#include "io_dl.h"
+#include "io_dl_internal.h"
 
 #include <dlfcn.h>
 #include <pthread.h>

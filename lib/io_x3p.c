@@ -37,7 +37,7 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 #include <zip.h>
-#include "io_dl.h"
+#include "io_dl_internal.h"
 
 #define NS "http://www.opengps.eu/2008/ISO5436_2"
 /* main.xml beyond this is not a surface description. */

@@ -34,7 +34,7 @@
 #include <libxml/tree.h>
 #include <libxml/xmlreader.h>
 #include <zip.h>
-#include "io_dl.h"
+#include "io_dl_internal.h"
 
 #define XLSX_PART_MAX ((uint64_t)64 << 20)
 #define REL_NS "http://schemas.openxmlformats.org/officeDocument/2006/" \

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zip.h>
-#include "io_dl.h"
+#include "io_dl_internal.h"
 
 zip_t *
 rc__zip_open_mem(const unsigned char *buf, size_t len, const char *what,

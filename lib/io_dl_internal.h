@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
-/* io_dl.h - libzip, libxml2 and libyaml, loaded when a zip container
- * (x3p, Excel workbook, contact.engineering) is first read or an x3p
+/* io_dl_internal.h - libzip, libxml2 and libyaml, loaded when a zip
+ * container (x3p, Excel workbook, contact.engineering) is first read or an x3p
  * written, not when a program starts.
  *
  * Linked, they and what they pull in (libcrypto, ICU, libstdc++, liblzma,
@@ -20,8 +20,8 @@
  * once under a lock, like the dynamic linker's own table for a linked
  * library: they hold no state of a computation.
  */
-#ifndef RC_IO_DL_H
-#define RC_IO_DL_H
+#ifndef RC_IO_DL_INTERNAL_H
+#define RC_IO_DL_INTERNAL_H
 
 #include "rc_err.h"
 
