@@ -18,13 +18,22 @@ WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
 STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L
 PKG_CONFIG ?= pkg-config
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
-# libnetcdf is compiled against but loaded only when a netCDF file is read
-# or written (lib/io_nc.c says why): not linked; its soname from the
-# shared library pkg-config points to.
-PKGS_DLOPEN = netcdf
+# libnetcdf, libzip, libxml2 and libyaml are compiled against but loaded
+# only when a file that needs them is read or written (lib/io_nc.c,
+# lib/io_dl_internal.h say why): not linked; each soname from the shared
+# library pkg-config points to.  The tests that make zips themselves link them.
+PKGS_DLOPEN = netcdf libzip libxml-2.0 yaml-0.1
 PKG_LIBS   := $(shell $(PKG_CONFIG) --libs $(filter-out $(PKGS_DLOPEN),$(PKGS)) 2>/dev/null)
-NETCDF_SONAME := $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir netcdf 2>/dev/null)/libnetcdf.so" 2>/dev/null | awk '$$1 == "SONAME" { print $$2 }')
-DLOPEN_CFLAGS = $(if $(NETCDF_SONAME),-DRC_NETCDF_SONAME='"$(NETCDF_SONAME)"')
+DLOPEN_LIBS := $(shell $(PKG_CONFIG) --libs $(filter-out netcdf,$(PKGS_DLOPEN)) 2>/dev/null)
+soname = $(shell objdump -p "$$($(PKG_CONFIG) --variable=libdir $(1) 2>/dev/null)/$(2).so" 2>/dev/null | awk '$$1 == "SONAME" { print $$2 }')
+NETCDF_SONAME := $(call soname,netcdf,libnetcdf)
+ZIP_SONAME := $(call soname,libzip,libzip)
+XML_SONAME := $(call soname,libxml-2.0,libxml2)
+YAML_SONAME := $(call soname,yaml-0.1,libyaml)
+DLOPEN_CFLAGS = $(if $(NETCDF_SONAME),-DRC_NETCDF_SONAME='"$(NETCDF_SONAME)"') \
+	$(if $(ZIP_SONAME),-DRC_ZIP_SONAME='"$(ZIP_SONAME)"') \
+	$(if $(XML_SONAME),-DRC_XML_SONAME='"$(XML_SONAME)"') \
+	$(if $(YAML_SONAME),-DRC_YAML_SONAME='"$(YAML_SONAME)"')
 
 # Before compiling anything: every library must be found, else name the
 # Debian packages to install (instead of a compiler error on fftw3.h).
@@ -119,7 +128,7 @@ $(BIN)/%: $(O)/tools/%.o $(COMMON_OBJ) $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
 
 $(O)/tests/test_%: $(O)/tests/test_%.o $(TESTLIB_OBJ) $(LIB)
-	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)
+	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS) $(DLOPEN_LIBS)
 
 $(O)/bench/bench_%: $(O)/bench/bench_%.o $(LIB)
 	$(CC) $(ALL_LDFLAGS) -o $@ $^ $(LDLIBS)

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "atomic.h"
@@ -36,14 +37,27 @@ env_threads(void)
 }
 
 int
-rc_fft_set_threads(int n)
+rc_fft_thread_count(int n)
 {
 #ifdef _OPENMP
-	static int initialised;	/* FFTW's own global state: init once */
 	if (n <= 0)
 		n = env_threads();
 	if (n <= 0)
 		n = rc_threads_auto();
+	return n;
+#else
+	(void)n;
+	(void)env_threads;
+	return 1;
+#endif
+}
+
+int
+rc_fft_set_threads(int n)
+{
+#ifdef _OPENMP
+	static int initialised;	/* FFTW's own global state: init once */
+	n = rc_fft_thread_count(n);
 	if (!initialised) {
 		fftw_init_threads();
 		initialised = 1;
@@ -52,9 +66,7 @@ rc_fft_set_threads(int n)
 	fftw_plan_with_nthreads(n);
 	return n;
 #else
-	(void)n;
-	(void)env_threads;
-	return 1;
+	return rc_fft_thread_count(n);
 #endif
 }
 
@@ -252,6 +264,31 @@ rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 }
 
 
+void *
+rc_fft_huge(size_t n, void **block)
+{
+	const size_t page = (size_t)2 << 20;
+	uintptr_t at;
+
+	if (n < page || n > SIZE_MAX - page)
+		return *block = fftw_malloc(n);
+	if ((*block = fftw_malloc(n + page)) == NULL)
+		return NULL;
+	at = ((uintptr_t)*block + page - 1) & ~(uintptr_t)(page - 1);
+#ifdef MADV_HUGEPAGE
+	/* Advice, failure changes nothing.  The part past the last whole
+	 * 2 MB stays on small pages (glibc's hugetlb tunable advises whole
+	 * mappings): a huge page there would hold up to 2 MB unused. */
+	uintptr_t whole = at + n / page * page;
+	uintptr_t end = ((uintptr_t)*block + n + page) & ~(uintptr_t)4095;
+
+	(void)madvise((void *)at, whole - at, MADV_HUGEPAGE);
+	if (end > whole)
+		(void)madvise((void *)whole, end - whole, MADV_NOHUGEPAGE);
+#endif
+	return (void *)at;
+}
+
 int
 rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
     rc_err *err)
@@ -266,8 +303,9 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 	f->nx = nx;
 	f->ny = ny;
 	f->nxc = nx / 2 + 1;
-	f->real = fftw_alloc_real(nx * ny);
-	f->spec = fftw_alloc_complex(f->nxc * ny);
+	f->real = rc_fft_huge(nx * ny * sizeof(double), &f->real_block);
+	f->spec = rc_fft_huge(f->nxc * ny * sizeof(fftw_complex),
+	    &f->spec_block);
 	if (f->real == NULL || f->spec == NULL) {
 		rc_fft_free(f);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers)",
@@ -325,8 +363,8 @@ rc_fft_free(rc_fft *f)
 		if (f->block_tail[what])
 			fftw_destroy_plan(f->block_tail[what]);
 	}
-	fftw_free(f->real);
-	fftw_free(f->spec);
+	fftw_free(f->real_block != NULL ? f->real_block : f->real);
+	fftw_free(f->spec_block != NULL ? f->spec_block : f->spec);
 	memset(f, 0, sizeof(*f));
 }
 

@@ -34,6 +34,7 @@
 #include <strings.h>
 #include <yaml.h>
 #include <zip.h>
+#include "io_dl_internal.h"
 
 #define CE_META_MAX ((uint64_t)16 << 20)
 #define CE_TOTAL_MAX ((uint64_t)1 << 30)
@@ -317,6 +318,10 @@ rc__ce_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		    "one first");
 	if ((za = rc__zip_open_mem(buf, len, "contact.engineering", err)) == NULL)
 		return -1;
+	if (rc__dl_yaml(err) != 0) {
+		zip_discard(za);
+		return -1;
+	}
 	if (zip_name_locate(za, "meta.yml", 0) < 0) {
 		rc_seterr(err, "a zip without main.xml or meta.yml: neither an "
 		    "x3p file (ISO 25178-72) nor a contact.engineering container");

@@ -37,6 +37,7 @@
 #include <libxml/parser.h>
 #include <libxml/tree.h>
 #include <zip.h>
+#include "io_dl_internal.h"
 
 #define NS "http://www.opengps.eu/2008/ISO5436_2"
 /* main.xml beyond this is not a surface description. */
@@ -399,6 +400,10 @@ rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s, rc_err *err)
 
 	if ((za = rc__zip_open_mem(buf, len, "x3p", err)) == NULL)
 		return -1;
+	if (rc__dl_xml(err) != 0) {
+		zip_discard(za);
+		return -1;
+	}
 	if (zip_name_locate(za, "main.xml", 0) < 0) {
 		rc_seterr(err, "a zip without main.xml: not an x3p file "
 		    "(ISO 25178-72)");
@@ -591,6 +596,8 @@ rc__x3p_write(const rc_grid *g, FILE *fp, rc_err *err)
 	    g->kind != RC_KIND_DISPLACEMENT)
 		return rc_seterr(err, "x3p holds heights; a %s grid is not one",
 		    rc_kind_name(g->kind));
+	if (rc__dl_zip(err) != 0 || rc__dl_xml(err) != 0)
+		return -1;
 	if ((data = rc_malloc(8 * n, err)) == NULL)
 		return -1;
 	{

@@ -34,6 +34,7 @@
 #include <libxml/tree.h>
 #include <libxml/xmlreader.h>
 #include <zip.h>
+#include "io_dl_internal.h"
 
 #define XLSX_PART_MAX ((uint64_t)64 << 20)
 #define REL_NS "http://schemas.openxmlformats.org/officeDocument/2006/" \
@@ -549,6 +550,8 @@ rc__xlsx_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 
 	if ((b.za = rc__zip_open_mem(buf, len, "xlsx", err)) == NULL)
 		return -1;
+	if (rc__dl_xml(err) != 0)
+		goto out;
 	if (read_shared(&b, err) != 0)
 		goto out;
 	for (size_t k = 0; k < b.nshared; k++)

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zip.h>
+#include "io_dl_internal.h"
 
 zip_t *
 rc__zip_open_mem(const unsigned char *buf, size_t len, const char *what,
@@ -23,6 +24,8 @@ rc__zip_open_mem(const unsigned char *buf, size_t len, const char *what,
 	zip_source_t *src;
 	zip_t *za;
 
+	if (rc__dl_zip(err) != 0)
+		return NULL;
 	zip_error_init(&ze);
 	if ((src = zip_source_buffer_create(buf, len, 0, &ze)) == NULL) {
 		rc_seterr(err, "%s: %s", what, zip_error_strerror(&ze));

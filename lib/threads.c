@@ -60,13 +60,24 @@ int
 rc_threads_wait_passively(int threads, char **argv)
 {
 #ifdef _OPENMP
-	if (threads <= 1 || getenv("OMP_WAIT_POLICY") != NULL)
+	const char *again = getenv(RC_THREADS_REEXEC_ENV);
+	int tunables = getenv("GLIBC_TUNABLES") == NULL;
+
+	if (threads <= 1 || getenv("OMP_WAIT_POLICY") != NULL) {
+		/* restarted: the malloc tunable was for this program only */
+		if (again != NULL && strcmp(again, "tunables") == 0)
+			unsetenv("GLIBC_TUNABLES");
 		return 0;
+	}
 	if (setenv("OMP_WAIT_POLICY", "passive", 1) != 0 ||
-	    setenv(RC_THREADS_REEXEC_ENV, "1", 1) != 0)
+	    (tunables && setenv("GLIBC_TUNABLES", "glibc.malloc.hugetlb=1",
+	    1) != 0) || setenv(RC_THREADS_REEXEC_ENV, tunables ? "tunables" :
+	    "1", 1) != 0)
 		return -1;
 	execv("/proc/self/exe", argv);
 	unsetenv(RC_THREADS_REEXEC_ENV);
+	if (tunables)
+		unsetenv("GLIBC_TUNABLES");
 	return -1;	/* no /proc: run on, as before */
 #else
 	(void)threads;

@@ -340,9 +340,43 @@ pixel_vs_love(size_t nx, size_t ny)
 	free(g);
 }
 
+/* The continuum table equals E* |q| / 2 at every entry, bit for bit: the
+ * rows above ny/2, copied from their mirror images (elastic.c), included;
+ * even and odd row counts, a rectangular cell. */
+static void
+table_exact(size_t nx, size_t ny, double lx, double ly)
+{
+	rc_elastic e;
+	rc_err err;
+	size_t bad = 0;
+	double kmin = HUGE_VAL, kmax = 0;
+
+	if (rc_elastic_init(&e, nx, ny, lx, ly, 3.0, RC_FFT_ESTIMATE, &err) != 0) {
+		test_true(0, "table %zux%zu: %s", nx, ny, err.msg);
+		return;
+	}
+	for (size_t j = 0; j < ny; j++)
+		for (size_t i = 0; i < e.nxc; i++) {
+			double k = 0.5 * 3.0 * hypot(rc_wavenumber(i, nx, lx),
+			    rc_wavenumber(j, ny, ly));
+
+			bad += e.stiffness[j * e.nxc + i] != k;
+			kmax = fmax(kmax, k);
+			if (k > 0)
+				kmin = fmin(kmin, k);
+		}
+	test_int((long long)bad, 0, "table %zux%zu: entries that differ from "
+	    "E* hypot(qx, qy) / 2", nx, ny);
+	test_true(e.k_min == kmin && e.k_max == kmax, "table %zux%zu: k_min, "
+	    "k_max over all entries", nx, ny);
+	rc_elastic_free(&e);
+}
+
 int
 main(void)
 {
+	table_exact(16, 12, 1.0, 0.7);
+	table_exact(9, 7, 1.3, 2.1);
 	single_modes(32, 24, 2.0, 1.5, 3.0);
 	single_modes(15, 9, 1.0, 2.5, 0.7);	/* odd: no Nyquist mode */
 	single_modes(16, 1, 4.0, 1.0, 1.0);	/* line contact: qy = 0 */

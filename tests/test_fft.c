@@ -1,12 +1,16 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* test_fft.c - the FFT layer's thread count, effort policy, FFTW wisdom
  * and in-place c2r plan. */
+#include <complex.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "fft.h"
+#include "grid.h"
+#include "spectral.h"
 #include "testlib.h"
 
 /* -j 0 means OMP_NUM_THREADS when it holds a positive number, else all
@@ -26,6 +30,11 @@ test_threads(void)
 	test_int(rc_fft_set_threads(-1), 5, "OMP_NUM_THREADS=5,2: first level");
 	setenv("OMP_NUM_THREADS", "lots", 1);
 	test_int(rc_fft_set_threads(0), all, "bad OMP_NUM_THREADS: all cores");
+	/* the count alone (before a restart) is the count set */
+	test_int(rc_fft_thread_count(0), all, "count, bad OMP_NUM_THREADS: all cores");
+	setenv("OMP_NUM_THREADS", "3", 1);
+	test_int(rc_fft_thread_count(0), 3, "count: OMP_NUM_THREADS=3");
+	test_int(rc_fft_thread_count(2), 2, "count: -j 2 wins");
 	unsetenv("OMP_NUM_THREADS");
 	rc_fft_set_threads(1);
 }
@@ -233,9 +242,105 @@ test_blocked(void)
 	}
 }
 
+/* rc_rms_gradient finds its scale from the moduli of the coefficients
+ * near the largest component only and scales by a multiplication: the
+ * same bits as the method it replaced, every modulus scanned and ldexp
+ * on each (below, with the same 64 ordered parts), on odd and even grids
+ * of heights near 1, 1e150, 1e-150, 1e300 and 1e-300. */
+static void
+test_gbar_bits(void)
+{
+	static const double scales[] = { 1, 1e150, 1e-150, 1e300, 1e-300 };
+	static const size_t sizes[][2] = { { 24, 16 }, { 17, 9 } };
+	unsigned long seed = 12345;
+
+	for (size_t s = 0; s < 2; s++)
+		for (size_t c = 0; c < sizeof(scales) / sizeof(scales[0]); c++) {
+			size_t nx = sizes[s][0], ny = sizes[s][1];
+			rc_grid *g = rc_grid_new(nx, ny, 1.0, 0.8, NULL);
+			double got, mmax = 0, partial[64], want = 0;
+			rc_fft f;
+			int e;
+
+			for (size_t k = 0; k < nx * ny; k++) {
+				seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+				g->z[k] = scales[c] * ((double)(seed >> 11) / 9007199254740992.0 - 0.5);
+			}
+			rc_rms_gradient(g, NULL, &got, NULL);
+			rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, NULL);
+			memcpy(f.real, g->z, nx * ny * sizeof(double));
+			rc_fft_forward(&f);
+			for (size_t k = 0; k < ny * f.nxc; k++)
+				mmax = fmax(mmax, cabs(f.spec[k]));
+			e = mmax > 0 && isfinite(mmax) ? ilogb(mmax) : 0;
+			for (long p = 0; p < 64; p++) {
+				partial[p] = 0;
+				for (size_t j = (size_t)p * ny / 64; j < (size_t)(p + 1) * ny / 64; j++)
+					for (size_t i = 0; i < f.nxc; i++) {
+						double qx = rc_deriv_wavenumber(i, nx, g->lx);
+						double qy = rc_deriv_wavenumber(j, ny, g->ly);
+						double m = ldexp(cabs(f.spec[j * f.nxc + i]), -e);
+
+						partial[p] += rc_fft_weight(i, nx) * (qx * qx + qy * qy) * m * m;
+					}
+			}
+			for (int p = 0; p < 64; p++)
+				want += partial[p];
+			want = ldexp(sqrt(want), e) / (double)(nx * ny);
+			test_true(memcmp(&got, &want, sizeof(got)) == 0, "rms gradient "
+			    "%zux%zu, heights ~%g: %.17g, full scan %.17g", nx, ny,
+			    scales[c], got, want);
+			rc_fft_free(&f);
+			rc_grid_free(g);
+		}
+}
+
+/* rc_fft_init's buffers of 2 MB and more start on a 2 MB boundary (huge
+ * pages, rc_fft_huge), and the transforms on them give the same bits as
+ * FFTW's on buffers of fftw_malloc; below 2 MB they are fftw_malloc's. */
+static void
+test_huge(void)
+{
+	const size_t nx = 512, ny = 512, nxc = nx / 2 + 1;
+	rc_fft f, small;
+	double *in = fftw_alloc_real(nx * ny);
+	fftw_complex *out = fftw_alloc_complex(nxc * ny);
+	fftw_plan p;
+	void *block;
+	char *b;
+
+	rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, NULL);
+	p = fftw_plan_dft_r2c_2d((int)ny, (int)nx, in, out, FFTW_ESTIMATE);
+	test_int((long long)((uintptr_t)f.real % ((size_t)2 << 20)), 0,
+	    "512^2 real buffer on a 2 MB boundary");
+	test_int((long long)((uintptr_t)f.spec % ((size_t)2 << 20)), 0,
+	    "512^2 spectrum on a 2 MB boundary");
+	for (size_t k = 0; k < nx * ny; k++)
+		in[k] = f.real[k] = sin(0.001 * (double)(k * k % 7919)) + (double)k / (double)(nx * ny);
+	rc_fft_forward(&f);
+	fftw_execute(p);
+	test_true(memcmp(f.spec, out, nxc * ny * sizeof(fftw_complex)) == 0,
+	    "512^2 r2c on huge-page buffers: the same bits as on fftw_malloc's");
+	rc_fft_init(&small, 64, 64, RC_FFT_ESTIMATE, NULL);
+	test_true((void *)small.real == small.real_block && (void *)small.spec ==
+	    small.spec_block, "64^2 buffers: fftw_malloc's, as they are");
+	b = rc_fft_huge(((size_t)2 << 20) + 5, &block);
+	memset(b, 1, ((size_t)2 << 20) + 5);	/* all of it writable (ASan) */
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: aligned inside its block");
+	fftw_free(block);
+	fftw_destroy_plan(p);
+	fftw_free(in);
+	fftw_free(out);
+	rc_fft_free(&small);
+	rc_fft_free(&f);
+}
+
 int
 main(void)
 {
+	test_gbar_bits();
+	test_huge();
 	test_threads();
 	test_policy();
 	test_wisdom();

@@ -90,6 +90,7 @@ typedef struct rc_elastic {
 	size_t nx, ny, nxc, n;	/* n = nx * ny (dist: ny local, n global) */
 	double modulus;		/* E* */
 	double *stiffness;	/* k_q, ny * nxc, row j, column i */
+	void *stiffness_block;	/* rc_fft_huge's block; NULL: stiffness */
 	double k_min, k_max;	/* smallest non-zero and largest k_q */
 	enum rc_kernel kernel;	/* of the table */
 	rc_fft fft;

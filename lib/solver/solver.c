@@ -177,8 +177,9 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 			s->k_uniform = rc_layer_uniform_stiffness(o->modulus,
 			    o->thickness, o->poisson);
 	}
-	s->height = fftw_alloc_real(n);
-	s->sigma = fftw_alloc_real(n);
+	/* on huge pages (fft.h): they are first touched here */
+	s->height = rc_fft_huge(n * sizeof(double), &s->height_block);
+	s->sigma = rc_fft_huge(n * sizeof(double), &s->sigma_block);
 	s->contact = calloc(n, 1);
 	if (s->height == NULL || s->sigma == NULL || s->contact == NULL) {
 		rc_seterr(err, "out of memory (asked for %zu bytes of solver fields)",
@@ -194,7 +195,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 			s->top = s->height[k];
 	if ((o->method == RC_METHOD_FIRE ? rc__fire_alloc(s, err) :
 	    rc__cg_alloc(s, err)) != 0 || (scratch_needed(s) &&
-	    s->scratch == NULL && (s->scratch = fftw_alloc_real(n)) == NULL)) {
+	    s->scratch == NULL && (s->scratch = rc_fft_huge(n * sizeof(double),
+	    &s->scratch_block)) == NULL)) {
 		if (scratch_needed(s) && s->scratch == NULL)
 			rc_seterr(err, "out of memory (asked for %zu bytes)",
 			    n * sizeof(double));
@@ -219,9 +221,9 @@ rc_solver_free(rc_solver *s)
 	rc_elastic_free(&s->el);
 	rc_halfspace_release(&s->fel);
 	rc__adh_free_release(s);
-	fftw_free(s->scratch);
-	fftw_free(s->height);
-	fftw_free(s->sigma);
+	fftw_free(s->scratch_block != NULL ? s->scratch_block : s->scratch);
+	fftw_free(s->height_block != NULL ? s->height_block : s->height);
+	fftw_free(s->sigma_block != NULL ? s->sigma_block : s->sigma);
 	free(s->contact);
 	fftw_free(s->fire_vel);
 	fftw_free(s->cg_dir);

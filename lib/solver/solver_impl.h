@@ -101,6 +101,9 @@ struct rc_solver {
 	double p_adh, a_attr;
 	rc_adh_pad pad;		/* adhesion on free boundaries */
 	rc__watch watch;	/* the current solve's stall watch */
+	/* The blocks rc_fft_huge placed height, sigma and scratch in (what
+	 * fftw_free takes); NULL: the arrays themselves (solver.c). */
+	void *height_block, *sigma_block, *scratch_block;
 };
 
 /* The number of points of the whole grid: s->n, or the global count of a

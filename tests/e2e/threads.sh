@@ -112,5 +112,31 @@ for tool in surfgen surfwarp surfstat gfmd-solve; do
 	n=$(spin -u OMP_WAIT_POLICY | wc -l)
 	check "$tool -j 1: started once ($n start-ups)" test "$n" -eq 1
 done
+# The restart's malloc tunable (glibc.malloc.hugetlb=1, threads.h) is the
+# tool's alone: a program it runs (here the Gwyddion converter, a script
+# that saves its environment) does not inherit it; a GLIBC_TUNABLES the
+# user set reaches it unchanged.
+printf '#!/bin/sh\nenv > "%s/child.env"\nexit 1\n' "$PWD" >fakegwy
+chmod +x fakegwy
+printf 'not a height file\n' >junk.xyz
+for user in "" glibc.malloc.arena_max=2; do
+	rm -f child.env
+	if [ -n "$user" ]; then
+		env -u MAKEFLAGS -u OMP_WAIT_POLICY GLIBC_TUNABLES=$user \
+		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/surfstat" -j 2 junk.xyz \
+		    >/dev/null 2>&1
+	else
+		env -u MAKEFLAGS -u OMP_WAIT_POLICY -u GLIBC_TUNABLES \
+		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/surfstat" -j 2 junk.xyz \
+		    >/dev/null 2>&1
+	fi
+	check "surfstat -j 2 restarted before running the converter" \
+	    grep -q '^OMP_WAIT_POLICY=passive$' child.env
+	got=$(sed -n 's/^GLIBC_TUNABLES=//p' child.env)
+	check "GLIBC_TUNABLES '$user' reaches the converter as set ('$got')" \
+	    test "$got" = "$user"
+	check "the restart's marker does not reach the converter" \
+	    sh -c '! grep -q "^RC_THREADS_REEXEC=" child.env'
+done
 
 summary
