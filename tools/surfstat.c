@@ -172,6 +172,20 @@ out_close(const struct tool *t, struct out *o)
 	}
 }
 
+/* A scalar row with the grid's metadata, written alone, then freed. */
+static void
+write_scalar_row(const struct tool *t, rc_row *r, const rc_grid *g)
+{
+	struct out o;
+
+	if (rc_row_meta(r, g) != 0)
+		tool_fail(t, "out of memory");
+	out_open(t, &o);
+	out_row(t, &o, r);
+	out_close(t, &o);
+	rc_row_free(r);
+}
+
 /* Row building never fails short of memory exhaustion. */
 static void
 num(const struct tool *t, rc_row *r, const char *name, double v)
@@ -231,7 +245,6 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	rc_stats s;
 	rc_err err;
 	rc_row r;
-	struct out o;
 	double gbar, seconds;
 	char name[8], names[128];
 	const char *why;
@@ -279,12 +292,7 @@ scalars(const struct tool *t, const rc_grid *g, const rc_grid *mask,
 	}
 	num(t, &r, "plan_seconds", fft->plan_seconds);
 	num(t, &r, "seconds", seconds);
-	if (rc_row_meta(&r, g) != 0)
-		tool_fail(t, "out of memory");
-	out_open(t, &o);
-	out_row(t, &o, &r);
-	out_close(t, &o);
-	rc_row_free(&r);
+	write_scalar_row(t, &r, g);
 }
 
 /* The scalar row of a line scan not uniformly spaced (stats_nonuni.h). */
@@ -294,7 +302,6 @@ nonuni_scalars(const struct tool *t, const rc_grid *g)
 	rc_nonuni_stats s;
 	rc_err err;
 	rc_row r;
-	struct out o;
 	double seconds = rc_clock();
 
 	if (rc_nonuni_stats_compute(g, &s, &err) != 0)
@@ -326,12 +333,7 @@ nonuni_scalars(const struct tool *t, const rc_grid *g)
 	if (rc_row_int(&r, "n_missing", (long long)s.n_missing) != 0)
 		tool_fail(t, "out of memory");
 	num(t, &r, "seconds", seconds);
-	if (rc_row_meta(&r, g) != 0)
-		tool_fail(t, "out of memory");
-	out_open(t, &o);
-	out_row(t, &o, &r);
-	out_close(t, &o);
-	rc_row_free(&r);
+	write_scalar_row(t, &r, g);
 }
 
 /* --png with a spectrum table: the spectrum drawn log-log (png_plot.h),
