@@ -210,9 +210,12 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	struct wall w = { s, p };
 	/* with the sigma grid as the force where the operator's buffer
 	 * cannot hold it (the blocked path, no mass table) */
-	rc__fire_parts pt = { &s->el, s->n, POINTS(s), s->u, s->sigma,
-	    s->fire_vel, s->contact, &w, CHUNK, 1, 0, wall_range,
-	    update_range, wall_forced, NULL, NULL, NULL, NULL, NULL, NULL };
+	rc__fire_parts pt = { .el = &s->el, .n = s->n, .points = POINTS(s),
+	    .u = s->u, .f = s->sigma, .v = s->fire_vel, .contact = s->contact,
+	    .ctx = &w, .grain = CHUNK, .fuse = 1, .mean_sums = 0,
+	    .force = wall_range, .update = update_range,
+	    .forced = wall_forced, .mixed = NULL, .updated = NULL,
+	    .field = NULL, .accelerate = NULL, .mixing = NULL, .next = NULL };
 	int status;
 
 	(void)err;

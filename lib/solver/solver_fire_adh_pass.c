@@ -274,10 +274,13 @@ rc__adh_relax(const rc__adh_view *w, const rc_adhesion *law, int control,
     rc_solve_result *res)
 {
 	struct adh ad = { w, law, control, *pp, target, 0, 0 };
-	rc__fire_parts pt = { w->el, w->n, w->n_act, w->u, w->f, w->v,
-	    w->contact, &ad, 0, 0, control == RC__ADH_LEVEL, adh_range,
-	    adh_update_range, adh_forced, adh_mixed, adh_updated, NULL, NULL,
-	    NULL, NULL };
+	rc__fire_parts pt = { .el = w->el, .n = w->n, .points = w->n_act,
+	    .u = w->u, .f = w->f, .v = w->v, .contact = w->contact,
+	    .ctx = &ad, .grain = 0, .fuse = 0,
+	    .mean_sums = control == RC__ADH_LEVEL, .force = adh_range,
+	    .update = adh_update_range, .forced = adh_forced,
+	    .mixed = adh_mixed, .updated = adh_updated, .field = NULL,
+	    .accelerate = NULL, .mixing = NULL, .next = NULL };
 	size_t n = w->n, k;
 	int status;
 

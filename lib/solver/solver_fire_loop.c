@@ -374,7 +374,9 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 			rc_fft_rows_r2c(f, pt->u, b);
 	for (it = 0; ; it++) {
 		double sum[RC__FIRE_SUMS], least, *a;
-		rc__fire_report r = { HUGE_VAL, 0, 0, 1, 0, RC_FIRE_DT_MAX };
+		rc__fire_report r = { .residual = HUGE_VAL, .power = 0,
+		    .contact = 0, .mass0 = 1, .halt = 0,
+		    .dt_max = RC_FIRE_DT_MAX };
 
 		stage_force(&op, sum, &least);
 		rc_elastic_sum(e, sum, RC__FIRE_SUMS);
