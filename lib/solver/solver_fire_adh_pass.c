@@ -107,7 +107,9 @@ struct adh {
 /* The force pass with adhesion on k0 <= k < k1: f_eff into f, the
  * contact set; adds the squared error off contact, K u over the contact
  * points, sigma_a off them, the |traction|, the contact count and the
- * power to sum[0..5]; the smallest gap off contact into *least. */
+ * power to sum[0..5]; the smallest gap off contact into *least.
+ * wall_range (solver_fire.c) is its near-copy for the hard wall, kept
+ * apart for the sums' order and form (see there): bit for bit rows. */
 static void
 adh_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -213,7 +215,9 @@ adh_mixed(void *ctx, double *sum, double *dt)
 }
 
 /* The update on k0 <= k < k1; the new heights' sum to sum[0] (the
- * substrate's load, next). */
+ * substrate's load, next).  update_range (solver_fire.c) is the wall's
+ * near-copy, kept apart for its own clamp and no sum (see there): bit
+ * for bit rows. */
 static void
 adh_update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)

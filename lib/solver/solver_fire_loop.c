@@ -132,7 +132,11 @@ struct fire_op {
 
 /* The point range of this thread's share of n points: the partition of
  * OpenMP's static schedule (GCC's: the first n mod T threads take one
- * more), so that a pass keeps the sums of a `parallel for` over points. */
+ * more), so that a pass keeps the sums of a `parallel for` over points.
+ * A copy of libgomp's split on purpose: the interactions with grain 0
+ * summed in a `parallel for ... schedule(static)' before the one loop,
+ * and each thread's partial sum (hence its rounding, the rows' bits)
+ * depends on where its share starts and ends. */
 static void
 thread_share(size_t n, size_t *k0, size_t *k1)
 {
