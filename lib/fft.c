@@ -264,6 +264,24 @@ rc_fft_plan_c2r_inplace(size_t nx, size_t ny, fftw_complex *buf,
 }
 
 
+int
+rc_fft_bytes(size_t a, size_t b, size_t size, size_t *bytes)
+{
+	*bytes = 0;
+	if (b != 0 && a > SIZE_MAX / b)
+		return -1;
+	if (size != 0 && a * b > SIZE_MAX / size)
+		return -1;
+	*bytes = a * b * size;
+	return 0;
+}
+
+void
+rc_fft_huge_free(void *x, void *block)
+{
+	fftw_free(block != NULL ? block : x);
+}
+
 void *
 rc_fft_huge(size_t n, void **block)
 {
@@ -296,16 +314,23 @@ rc_fft_init(rc_fft *f, size_t nx, size_t ny, enum rc_fft_effort effort,
 	double t0;
 	unsigned flags = effort_flags(effort);
 	void *probe;
+	size_t real_bytes, spec_bytes;
 
 	memset(f, 0, sizeof(*f));
 	if (nx > (size_t)INT32_MAX || ny > (size_t)INT32_MAX)
 		return rc_seterr(err, "grid %zux%zu too large for FFTW's int sizes", nx, ny);
+	/* spec_bytes >= real_bytes: below SIZE_MAX / 3, the sums in the
+	 * messages below fit too */
+	if (rc_fft_bytes(nx, ny, sizeof(double), &real_bytes) != 0 ||
+	    rc_fft_bytes(nx / 2 + 1, ny, sizeof(fftw_complex), &spec_bytes) !=
+	    0 || spec_bytes > SIZE_MAX / 3)
+		return rc_seterr(err, "grid %zux%zu too large: its FFT buffers' "
+		    "size overflows size_t", nx, ny);
 	f->nx = nx;
 	f->ny = ny;
 	f->nxc = nx / 2 + 1;
-	f->real = rc_fft_huge(nx * ny * sizeof(double), &f->real_block);
-	f->spec = rc_fft_huge(f->nxc * ny * sizeof(fftw_complex),
-	    &f->spec_block);
+	f->real = rc_fft_huge(real_bytes, &f->real_block);
+	f->spec = rc_fft_huge(spec_bytes, &f->spec_block);
 	if (f->real == NULL || f->spec == NULL) {
 		rc_fft_free(f);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FFT buffers)",
@@ -363,8 +388,8 @@ rc_fft_free(rc_fft *f)
 		if (f->block_tail[what])
 			fftw_destroy_plan(f->block_tail[what]);
 	}
-	fftw_free(f->real_block != NULL ? f->real_block : f->real);
-	fftw_free(f->spec_block != NULL ? f->spec_block : f->spec);
+	rc_fft_huge_free(f->real, f->real_block);
+	rc_fft_huge_free(f->spec, f->spec_block);
 	memset(f, 0, sizeof(*f));
 }
 

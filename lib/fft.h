@@ -92,6 +92,11 @@ int rc_fft_set_threads(int n);
  * per MB less on this project's virtual machine (13 us a 4 kB fault).
  * *block is what to give fftw_free. */
 void *rc_fft_huge(size_t n, void **block);
+/* Frees what rc_fft_huge gave (x, block), or x from fftw_malloc when
+ * block is NULL (a zeroed struct's field filled elsewhere). */
+void rc_fft_huge_free(void *x, void *block);
+/* *bytes = a b size; -1 if that overflows size_t (then *bytes is 0). */
+int rc_fft_bytes(size_t a, size_t b, size_t size, size_t *bytes);
 /* The number rc_fft_set_threads(n) would put in effect, without starting
  * FFTW's threads (2.5 ms of CPU: wasted in a program about to restart
  * for passive waiting, threads.h). */

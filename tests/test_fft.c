@@ -302,7 +302,7 @@ static void
 test_huge(void)
 {
 	const size_t nx = 512, ny = 512, nxc = nx / 2 + 1;
-	rc_fft f, small;
+	rc_fft f, small, big_fft;
 	double *in = fftw_alloc_real(nx * ny);
 	fftw_complex *out = fftw_alloc_complex(nxc * ny);
 	fftw_plan p;
@@ -329,6 +329,23 @@ test_huge(void)
 	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
 	    ((size_t)2 << 20) == 0, "rc_fft_huge: aligned inside its block");
 	fftw_free(block);
+	{
+		/* INT32_MAX^2 doubles: 2^65 bytes, past size_t */
+		rc_err err;
+		size_t big = INT32_MAX, bytes;
+
+		test_int(rc_fft_init(&big_fft, big, big, RC_FFT_ESTIMATE,
+		    &err), -1, "rc_fft_init: INT32_MAX^2 refused");
+		test_true(strstr(err.msg, "overflows size_t") != NULL,
+		    "rc_fft_init: INT32_MAX^2 refused as an overflow, not "
+		    "tried as a wrapped size");
+		test_int(rc_fft_bytes(SIZE_MAX / 2 + 1, 2, 1, &bytes), -1,
+		    "rc_fft_bytes: (SIZE_MAX/2+1) 2 overflows");
+		test_int(rc_fft_bytes(SIZE_MAX / 16 + 1, 2, 8, &bytes), -1,
+		    "rc_fft_bytes: (SIZE_MAX/16+1) 2 8 overflows");
+		test_int(rc_fft_bytes(3, 5, 8, &bytes), 0, "rc_fft_bytes 3 5 8");
+		test_int((long long)bytes, 120, "rc_fft_bytes 3 5 8 = 120");
+	}
 	fftw_destroy_plan(p);
 	fftw_free(in);
 	fftw_free(out);

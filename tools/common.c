@@ -490,14 +490,20 @@ start_threads_deaf(void)
 }
 
 void
+tool_threads_setup(struct tool *t)
+{
+	rc_threads_wait_passively(rc_fft_thread_count(t->threads), t->argv);
+	rc_fft_set_threads(t->threads);
+	unsetenv(RC_THREADS_REEXEC_ENV);	/* not for the programs we run */
+}
+
+void
 tool_fft_setup(struct tool *t)
 {
 	const char *env = getenv("RC_WISDOM");
 	rc_err err;
 
-	rc_threads_wait_passively(rc_fft_thread_count(t->threads), t->argv);
-	rc_fft_set_threads(t->threads);
-	unsetenv(RC_THREADS_REEXEC_ENV);	/* not for the programs we run */
+	tool_threads_setup(t);
 	start_threads_deaf();
 	if (t->wisdom == NULL && env != NULL && env[0] != '\0')
 		t->wisdom = env;

@@ -140,6 +140,11 @@ void tool_usage_check(struct tool *t);
  * opt was one of them (handled), 0 otherwise. */
 int tool_common_option(struct tool *t, int opt, const char *arg);
 
+/* The threads alone (tool_fft_setup's first step): the restart for
+ * passive waiting (threads.h), the transforms' threads, and the
+ * restart's marker removed so that a program the tool runs (the
+ * Gwyddion converter) does not take it for its own. */
+void tool_threads_setup(struct tool *t);
 /* FFT set-up, after tool_usage_check and before any plan: threads (-j,
  * else OMP_NUM_THREADS, else all cores) and FFTW wisdom from --wisdom FILE
  * or the file named by $RC_WISDOM (a missing file is fine; an unreadable or

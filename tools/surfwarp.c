@@ -414,8 +414,7 @@ main(int argc, char **argv)
 		warp_option(&t, &wo, opt, optarg, argc, argv);
 	}
 	warp_opts_check(&t, &wo, argc, argv);
-	rc_threads_wait_passively(rc_fft_thread_count(t.threads), t.argv);
-	rc_fft_set_threads(t.threads);
+	tool_threads_setup(&t);
 	gsl_set_error_handler_off();	/* GSL reports through return codes */
 	/* Levelling steps use the valid points; -w, --flip, --carve and the
 	 * renormalisation are refused while points are missing. */

@@ -11,7 +11,7 @@ int
 rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
     double modulus, enum rc_fft_effort effort, rc_err *err)
 {
-	size_t i, j;
+	size_t i, j, bytes;
 
 	memset(e, 0, sizeof(*e));
 	if (!(modulus > 0) || !isfinite(modulus))
@@ -23,12 +23,16 @@ rc_elastic_init(rc_elastic *e, size_t nx, size_t ny, double lx, double ly,
 	e->nxc = e->fft.nxc;
 	e->n = nx * ny;
 	e->modulus = modulus;
-	e->stiffness = rc_fft_huge(e->nxc * ny * sizeof(double),
-	    &e->stiffness_block);
+	if (rc_fft_bytes(e->nxc, ny, sizeof(double), &bytes) != 0) {
+		rc_fft_free(&e->fft);
+		return rc_seterr(err, "grid %zux%zu too large: its stiffness "
+		    "table's size overflows size_t", nx, ny);
+	}
+	e->stiffness = rc_fft_huge(bytes, &e->stiffness_block);
 	if (e->stiffness == NULL) {
 		rc_fft_free(&e->fft);
 		return rc_seterr(err, "out of memory (asked for %zu bytes of stiffness table)",
-		    e->nxc * ny * sizeof(double));
+		    bytes);
 	}
 	e->k_min = HUGE_VAL;
 	e->k_max = 0;
@@ -221,8 +225,7 @@ void
 rc_elastic_free(rc_elastic *e)
 {
 	rc_fft_free(&e->fft);
-	fftw_free(e->stiffness_block != NULL ? e->stiffness_block :
-	    e->stiffness);
+	rc_fft_huge_free(e->stiffness, e->stiffness_block);
 	memset(e, 0, sizeof(*e));
 }
 

@@ -8,11 +8,13 @@
  *   the hard wall (solver_wall.c): H = +inf, sigma >= 0 alone;
  *   the hardness cap (solver_hardness.c, perfect plasticity): H =
  *     opts.hardness.
- * The pointwise rules below are written once in H: with H = +inf every
- * comparison with H is false for a finite sigma, so they are exactly the
- * wall's (sigma > 0 on contact, max(v, h) off it).  The rules over the
+ * The pointwise rules below are written once in H: with H = +inf and a
+ * finite sigma, sigma < H always holds and sigma >= H never does, so they
+ * are exactly the wall's (sigma > 0 on contact, max(v, h) off it).  The rules over the
  * whole field (the start, the level fit, the load restoration) differ and
- * are the interaction's functions.  Complementarity, with the gap
+ * are the interaction's functions.  The CG (solver_cg.c) runs one loop
+ * with two rule sets inside it, and cg_reentry selects which: the
+ * wall's (re-entry, damping) or the cap's (projection, trust region).  Complementarity, with the gap
  * g = u - h, u = G sigma + c (c the rigid level):
  *   g > 0 => sigma = 0;  0 < sigma < H => g = 0;  sigma = H => g <= 0. */
 #ifndef RC_INTERACTION_H
@@ -31,7 +33,12 @@ typedef struct rc__interaction {
 	size_t (*level)(const struct rc_solver *s, double *c);
 	/* mean sigma restored to p within the box, sum = sum sigma (the
 	 * wall's scale uses it); disp: G sigma to keep in step, or NULL.
-	 * Returns 1 if G sigma is now stale. */
+	 * With disp != NULL returns 1 if disp no longer equals G sigma
+	 * (the change was not a uniform scale), else 0.  With disp ==
+	 * NULL there is no G sigma to keep and the return means nothing:
+	 * the wall returns 0, the cap 1; a caller passing NULL must treat
+	 * G sigma as stale (the CG passes NULL only when it already is,
+	 * FIRE on pressures recomputes it every step). */
 	int (*restore_load)(struct rc_solver *s, double p, double sum,
 	    double *disp);
 	/* the largest move of one pressure in one step of either method
@@ -40,9 +47,11 @@ typedef struct rc__interaction {
 	/* its column of the solution: the fraction of the points at H
 	 * (a_plastic; rc_solver_plastic_fraction); NULL: none (the wall) */
 	double (*plastic_fraction)(const struct rc_solver *s);
-	/* The CG's rules for it (solver_cg.c says what they are and
-	 * why): Polonsky & Keer's with re-entry (the wall), or projected
-	 * steps within a trust region (the cap). */
+	/* Which of the CG loop's two rule sets runs (solver_cg.c says
+	 * what they are and why): 1, Polonsky & Keer's with re-entry and
+	 * damping (the wall's); 0, projected steps within the trust region
+	 * max_move (the cap's).  One loop, two rule sets, not two
+	 * methods. */
 	int cg_reentry;
 } rc__interaction;
 

@@ -221,9 +221,9 @@ rc_solver_free(rc_solver *s)
 	rc_elastic_free(&s->el);
 	rc_halfspace_release(&s->fel);
 	rc__adh_free_release(s);
-	fftw_free(s->scratch_block != NULL ? s->scratch_block : s->scratch);
-	fftw_free(s->height_block != NULL ? s->height_block : s->height);
-	fftw_free(s->sigma_block != NULL ? s->sigma_block : s->sigma);
+	rc_fft_huge_free(s->scratch, s->scratch_block);
+	rc_fft_huge_free(s->height, s->height_block);
+	rc_fft_huge_free(s->sigma, s->sigma_block);
 	free(s->contact);
 	fftw_free(s->fire_vel);
 	fftw_free(s->cg_dir);

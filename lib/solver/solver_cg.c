@@ -2,7 +2,9 @@
 /* solver_cg.c - Polonsky & Keer's constrained conjugate gradient (Wear 231,
  * 1999, 206-219) for the pressure of mean p in the box of an interaction
  * (interaction.h): sigma >= 0 (the wall), 0 <= sigma <= H (the cap).
- * One loop for both; the wall's rules first, then the cap's changes.
+ * One loop, two rule sets inside it: the interaction's cg_reentry selects
+ * the wall's (1: re-entry and damping, described first) or the cap's (0:
+ * projection and a trust region, its changes below).
  *
  * The surface height of the elastic body under sigma is u = G sigma + c,
  * G_q = 1/k_q, c the rigid-body level.  On the contact set I_c = {sigma > 0}
@@ -190,7 +192,7 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 				n_active++;
 				sum_gt += g * t[k];
 				sum_t += t[k];
-				if (!reentry && fabs(t[k]) > t_max)
+				if (fabs(t[k]) > t_max)
 					t_max = fabs(t[k]);
 			} else
 				t[k] = 0;
@@ -215,7 +217,8 @@ rc__cg_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 			prev_bound = bound;
 			tau *= damp;
 		}
-		/* The cap's trust region (the wall: no bound). */
+		/* The trust region max_move, under either rule set (the
+		 * wall's is +inf: no bound). */
 		if (tau * t_max > in.max_move)
 			tau = in.max_move / t_max;
 		/* The re-entry pressure -tau g needs tau > 0.  With the gap zero

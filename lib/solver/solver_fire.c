@@ -79,7 +79,11 @@ struct wall {
 /* The force pass on the points k0 <= k < k1 of f, which holds K u: f_eff
  * into f and the contact set; adds the squared force off the wall, the
  * pressure on it, the contact count and the power f_eff . v to
- * sum[0..3]. */
+ * sum[0..3].  Close to adh_range (solver_fire_adh_pass.c) with
+ * smax = 0, but not that with a law: the wall tests u == h (adh_range g
+ * <= 0), sums the pressure p + K u (adh_range K u alone) and keeps four
+ * sums, each as the wall summed before the one loop; merged, the sums'
+ * order and roundings would change and with them the rows' bits. */
 static void
 wall_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -128,7 +132,11 @@ wall_forced(void *ctx, const double *sum, double least, rc__fire_report *r)
 	r->mass0 = rc__fire_mass0(w->s->el.k_min, r->contact, POINTS(w->s));
 }
 
-/* The update on k0 <= k < k1: the velocity and the clamped position. */
+/* The update on k0 <= k < k1: the velocity and the clamped position.
+ * adh_update_range's twin without the level shift and the heights' sum;
+ * kept apart because the clamp is written differently there (fmax, then
+ * v = 0 where u == h, against uk <= h here) and the rows must stay bit
+ * for bit what each interaction gave before the one loop. */
 static void
 update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -210,9 +218,12 @@ rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	struct wall w = { s, p };
 	/* with the sigma grid as the force where the operator's buffer
 	 * cannot hold it (the blocked path, no mass table) */
-	rc__fire_parts pt = { &s->el, s->n, POINTS(s), s->u, s->sigma,
-	    s->fire_vel, s->contact, &w, CHUNK, 1, 0, wall_range,
-	    update_range, wall_forced, NULL, NULL, NULL, NULL, NULL, NULL };
+	rc__fire_parts pt = { .el = &s->el, .n = s->n, .points = POINTS(s),
+	    .u = s->u, .f = s->sigma, .v = s->fire_vel, .contact = s->contact,
+	    .ctx = &w, .grain = CHUNK, .fuse = 1, .mean_sums = 0,
+	    .force = wall_range, .update = update_range,
+	    .forced = wall_forced, .mixed = NULL, .updated = NULL,
+	    .field = NULL, .accelerate = NULL, .mixing = NULL, .next = NULL };
 	int status;
 
 	(void)err;

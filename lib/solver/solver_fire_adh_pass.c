@@ -107,7 +107,9 @@ struct adh {
 /* The force pass with adhesion on k0 <= k < k1: f_eff into f, the
  * contact set; adds the squared error off contact, K u over the contact
  * points, sigma_a off them, the |traction|, the contact count and the
- * power to sum[0..5]; the smallest gap off contact into *least. */
+ * power to sum[0..5]; the smallest gap off contact into *least.
+ * wall_range (solver_fire.c) is its near-copy for the hard wall, kept
+ * apart for the sums' order and form (see there): bit for bit rows. */
 static void
 adh_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -213,7 +215,9 @@ adh_mixed(void *ctx, double *sum, double *dt)
 }
 
 /* The update on k0 <= k < k1; the new heights' sum to sum[0] (the
- * substrate's load, next). */
+ * substrate's load, next).  update_range (solver_fire.c) is the wall's
+ * near-copy, kept apart for its own clamp and no sum (see there): bit
+ * for bit rows. */
 static void
 adh_update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -274,10 +278,13 @@ rc__adh_relax(const rc__adh_view *w, const rc_adhesion *law, int control,
     rc_solve_result *res)
 {
 	struct adh ad = { w, law, control, *pp, target, 0, 0 };
-	rc__fire_parts pt = { w->el, w->n, w->n_act, w->u, w->f, w->v,
-	    w->contact, &ad, 0, 0, control == RC__ADH_LEVEL, adh_range,
-	    adh_update_range, adh_forced, adh_mixed, adh_updated, NULL, NULL,
-	    NULL, NULL };
+	rc__fire_parts pt = { .el = w->el, .n = w->n, .points = w->n_act,
+	    .u = w->u, .f = w->f, .v = w->v, .contact = w->contact,
+	    .ctx = &ad, .grain = 0, .fuse = 0,
+	    .mean_sums = control == RC__ADH_LEVEL, .force = adh_range,
+	    .update = adh_update_range, .forced = adh_forced,
+	    .mixed = adh_mixed, .updated = adh_updated, .field = NULL,
+	    .accelerate = NULL, .mixing = NULL, .next = NULL };
 	size_t n = w->n, k;
 	int status;
 

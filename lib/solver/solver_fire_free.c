@@ -377,10 +377,14 @@ rc__fire_sigma_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 	/* FIRE's start at solver_fire_loop.c's 1, stable while all points
 	 * are active (the start: uniform pressure), as measured above;
 	 * one range a thread, the sums of a `parallel for' */
-	rc__fire_parts pt = { &s->el, n, (double)n, s->u, s->scratch,
-	    s->fire_vel, NULL, &sf, 0, 0, 0, sigma_force_range,
-	    sigma_update_range, sigma_forced, sigma_mixed, sigma_updated,
-	    sigma_field, sigma_accelerate, sigma_mixing_range, sigma_next };
+	rc__fire_parts pt = { .el = &s->el, .n = n, .points = (double)n,
+	    .u = s->u, .f = s->scratch, .v = s->fire_vel, .contact = NULL,
+	    .ctx = &sf, .grain = 0, .fuse = 0, .mean_sums = 0,
+	    .force = sigma_force_range, .update = sigma_update_range,
+	    .forced = sigma_forced, .mixed = sigma_mixed,
+	    .updated = sigma_updated, .field = sigma_field,
+	    .accelerate = sigma_accelerate, .mixing = sigma_mixing_range,
+	    .next = sigma_next };
 	double *prev = fftw_alloc_real(3 * n);
 	int status;
 

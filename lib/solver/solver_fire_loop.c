@@ -132,7 +132,11 @@ struct fire_op {
 
 /* The point range of this thread's share of n points: the partition of
  * OpenMP's static schedule (GCC's: the first n mod T threads take one
- * more), so that a pass keeps the sums of a `parallel for` over points. */
+ * more), so that a pass keeps the sums of a `parallel for` over points.
+ * A copy of libgomp's split on purpose: the interactions with grain 0
+ * summed in a `parallel for ... schedule(static)' before the one loop,
+ * and each thread's partial sum (hence its rounding, the rows' bits)
+ * depends on where its share starts and ends. */
 static void
 thread_share(size_t n, size_t *k0, size_t *k1)
 {
@@ -374,7 +378,9 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 			rc_fft_rows_r2c(f, pt->u, b);
 	for (it = 0; ; it++) {
 		double sum[RC__FIRE_SUMS], least, *a;
-		rc__fire_report r = { HUGE_VAL, 0, 0, 1, 0, RC_FIRE_DT_MAX };
+		rc__fire_report r = { .residual = HUGE_VAL, .power = 0,
+		    .contact = 0, .mass0 = 1, .halt = 0,
+		    .dt_max = RC_FIRE_DT_MAX };
 
 		stage_force(&op, sum, &least);
 		rc_elastic_sum(e, sum, RC__FIRE_SUMS);

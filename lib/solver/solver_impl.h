@@ -311,26 +311,53 @@ typedef struct rc__fire_parts {
 	size_t n;		/* its points (this process's) */
 	double points;		/* the points that interact (the progress
 				 * report's contact share) */
-	const double *u;	/* the heights (the update's) */
+	const double *u;	/* the heights (the update's); const to the
+				 * loop only: the update pass writes u
+				 * through ctx, and the blocked path's r2c
+				 * reads the new u from here */
 	double *f;		/* n doubles for the force where the
-				 * operator's own buffer cannot hold it */
+				 * operator's own buffer cannot hold it:
+				 * required when there is no mass table
+				 * (a distributed operator, k_0 > 0 or a
+				 * k_q <= 0, or accelerate set) or on the
+				 * blocked path; NULL only when neither
+				 * holds (the force is then the operator's
+				 * real buffer) or field supplies it */
 	const double *v;	/* the velocities (the mixing's) */
-	const unsigned char *contact;	/* C, of the force pass */
-	void *ctx;		/* the interaction's state */
-	size_t grain;
-	int fuse;
-	int mean_sums;
-	rc__fire_pass *force, *update;
+	const unsigned char *contact;	/* C, of the force pass, read by
+				 * the loop's mixing pass; unused (may be
+				 * NULL) when mixing is set */
+	void *ctx;		/* the interaction's state, each pass's and
+				 * hook's first argument */
+	size_t grain;		/* plain path: points a range (chunks of a
+				 * `parallel for'), or 0 for one range a
+				 * thread (thread_share); it fixes the
+				 * order of the sums, hence the rows */
+	int fuse;		/* run the passes on the blocked
+				 * transforms between their row transforms
+				 * (then updated must be NULL) */
+	int mean_sums;		/* the mixing pass also sums a and v into
+				 * sum[3..4] (the level control's mean) */
+	rc__fire_pass *force;	/* step 2: f_eff, C, the force sums */
+	rc__fire_pass *update;	/* step 5: v', u += dt v', the clamp */
 	void (*forced)(void *ctx, const double *sum, double least,
-	    rc__fire_report *r);
-	void (*mixed)(void *ctx, double *sum, double *dt);
-	void (*updated)(void *ctx, const double *sum);
+	    rc__fire_report *r);	/* the force sums -> the report */
+	void (*mixed)(void *ctx, double *sum, double *dt);	/* or NULL:
+				 * the mixing sums of the step the update
+				 * takes; may lower *dt */
+	void (*updated)(void *ctx, const double *sum);	/* or NULL: after
+				 * the update pass, with its sums */
 	/* NULL but on pressures (see above) */
-	double *(*field)(void *ctx);
-	double *(*accelerate)(void *ctx, double *f);
-	rc__fire_pass *mixing;
+	double *(*field)(void *ctx);	/* u = G sigma; returns the grid
+				 * the force pass writes f into */
+	double *(*accelerate)(void *ctx, double *f);	/* a = K f;
+				 * returns a (no mass table then) */
+	rc__fire_pass *mixing;	/* the interaction's own mixing pass in
+				 * place of the loop's (contact unused) */
 	int (*next)(void *ctx, long it, double bound, double *residual,
-	    int *status);
+	    int *status);	/* the stopping rule in place of the
+				 * loop's: returns RC__CG_GO, RC__CG_STOP
+				 * or RC__CG_STALE (rc__cg_next's codes) */
 } rc__fire_parts;
 int rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
     rc__watch *watch, long *iterations, double *residual);

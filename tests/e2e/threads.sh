@@ -119,24 +119,28 @@ done
 printf '#!/bin/sh\nenv > "%s/child.env"\nexit 1\n' "$PWD" >fakegwy
 chmod +x fakegwy
 printf 'not a height file\n' >junk.xyz
+for run in "surfstat -j 2 junk.xyz" \
+    "surfwarp -q -w 2 -o /dev/null -j 2 junk.xyz"; do
+tool=${run%% *}
 for user in "" glibc.malloc.arena_max=2; do
 	rm -f child.env
 	if [ -n "$user" ]; then
 		env -u MAKEFLAGS -u OMP_WAIT_POLICY GLIBC_TUNABLES=$user \
-		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/surfstat" -j 2 junk.xyz \
+		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/"$run \
 		    >/dev/null 2>&1
 	else
 		env -u MAKEFLAGS -u OMP_WAIT_POLICY -u GLIBC_TUNABLES \
-		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/surfstat" -j 2 junk.xyz \
+		    RC_GWYDDION="$PWD/fakegwy" "$RC_BIN/"$run \
 		    >/dev/null 2>&1
 	fi
-	check "surfstat -j 2 restarted before running the converter" \
+	check "$tool -j 2 restarted before running the converter" \
 	    grep -q '^OMP_WAIT_POLICY=passive$' child.env
 	got=$(sed -n 's/^GLIBC_TUNABLES=//p' child.env)
-	check "GLIBC_TUNABLES '$user' reaches the converter as set ('$got')" \
+	check "$tool: GLIBC_TUNABLES '$user' reaches the converter as set ('$got')" \
 	    test "$got" = "$user"
-	check "the restart's marker does not reach the converter" \
+	check "$tool: the restart's marker does not reach the converter" \
 	    sh -c '! grep -q "^RC_THREADS_REEXEC=" child.env'
+done
 done
 
 summary
