@@ -63,6 +63,23 @@ by_hand(void)
 	    strstr(err.msg, "no two neighbouring") != NULL,
 	    "no valid segment: refused ('%s')", err.msg);
 	rc_grid_free(g);
+	/* a repeated x: refused by statistics and spectrum alike (it gave
+	 * inf and NaN) */
+	{
+		const double xr[] = { 0, 1, 1, 4 };
+		rc_psd1d_point *pts = NULL;
+		size_t npts = 0;
+
+		g = line_scan(xr, h, 4);
+		test_true(rc_nonuni_stats_compute(g, &s, &err) != 0 &&
+		    strstr(err.msg, "strictly increase") != NULL,
+		    "repeated x: statistics refused ('%s')", err.msg);
+		test_true(rc_nonuni_psd(g, RC_WINDOW_NONE, &pts, &npts, &err) != 0
+		    && pts == NULL, "repeated x: spectrum refused ('%s')",
+		    err.msg);
+		free(pts);
+		rc_grid_free(g);
+	}
 }
 
 /* n positions on [0, 1], both ends included, the others random (a fixed
