@@ -12,6 +12,9 @@
 #include <string.h>
 
 #include "io.h"
+#include "psd.h"
+#include "solver.h"
+#include "stats.h"
 #include "stats_nonuni.h"
 #include "units.h"
 #include "testlib.h"
@@ -299,6 +302,49 @@ surface_topography_files(void)
 	rc_grid_free(g);
 }
 
+/* What assumes the uniform step lx/nx refuses a grid with positions,
+ * naming --uniform (grid.h): the solver, statistics, spectra, ACF. */
+static void
+uniform_only(void)
+{
+	const double x[] = { 0, 1, 3, 4 }, h[] = { 0, 2, 2, 0 };
+	rc_grid *g = line_scan(x, h, 4);
+	rc_solver_opts so;
+	rc_solver *sv;
+	rc_stats st;
+	rc_psd1d_point *p1 = NULL;
+	rc_psd_bin *pb = NULL;
+	rc_acf_point *pa = NULL;
+	size_t n = 0;
+	rc_err err;
+
+	rc_solver_defaults(&so);
+	sv = rc_solver_new(g, &so, &err);
+	test_true(sv == NULL && strstr(err.msg, "--uniform") != NULL,
+	    "positions: solver refused ('%s')", sv ? "made" : err.msg);
+	rc_solver_free(sv);
+	err.msg[0] = '\0';
+	test_true(rc_stats_compute(g, NULL, RC_DERIV_FD, &st, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: statistics refused ('%s')", err.msg);
+	err.msg[0] = '\0';
+	test_true(rc_psd1d(g, RC_PSD1D_X, RC_WINDOW_NONE, &p1, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: 1D spectrum refused ('%s')", err.msg);
+	free(p1);
+	err.msg[0] = '\0';
+	test_true(rc_psd_radial(g, NULL, 5, &pb, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: radial spectrum refused ('%s')", err.msg);
+	free(pb);
+	err.msg[0] = '\0';
+	test_true(rc_acf(g, NULL, &pa, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: ACF refused ('%s')", err.msg);
+	free(pa);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -307,5 +353,6 @@ main(void)
 	tent_spectrum();
 	sine_spectrum();
 	surface_topography_files();
+	uniform_only();
 	return test_summary();
 }
