@@ -25,7 +25,10 @@
  * rc_read_opts.nonuniform asks): x holds the nx strictly increasing
  * positions of its heights, lx = x[nx-1] - x[0] and ly = lx / (nx - 1),
  * the mean step (SurfaceTopography's NonuniformLineScan).  Only what says
- * so takes such a grid (stats_nonuni.h); the rest must refuse it.
+ * so takes such a grid (stats_nonuni.h); the writers, --periodic, the
+ * solver (rc_solver_new), the statistics (stats.h) and the spectra and
+ * ACF (psd.h) refuse it (rc_grid_check_uniform, gridcheck.h); other
+ * steps do not check.
  *
  * Filled points: filled is NULL, or nx*ny flags, 1 where the value was
  * made up by filling a missing point (rc_fill_harmonic) instead of

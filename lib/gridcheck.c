@@ -70,3 +70,12 @@ rc_grid_missing_count(const rc_grid *g)
 		n += g->valid[k] == 0;
 	return n;
 }
+
+int
+rc_grid_check_uniform(const rc_grid *g, rc_err *err)
+{
+	if (g->x == NULL)
+		return 0;
+	return rc_seterr(err, "a line scan not uniformly spaced: this needs a "
+	    "uniform step; read it with --uniform to resample it onto one");
+}

@@ -20,6 +20,7 @@
 
 #include <stddef.h>
 #include "grid.h"
+#include "rc_err.h"
 
 /* surfgen's periodic surfaces measured at most 1.63 (30 of them, 8^2 to
  * 64^2 points, H 0.3 and 0.8); a tilted plane gives n - 1 along a side of
@@ -33,5 +34,9 @@ double rc_grid_wrap_ratio(const rc_grid *g);
 
 /* Points flagged missing (0 if g->valid is NULL). */
 size_t rc_grid_missing_count(const rc_grid *g);
+
+/* 0 if g is uniformly spaced (g->x NULL), else an error naming --uniform:
+ * what assumes the step lx/nx (solver, statistics, spectra) calls it. */
+int rc_grid_check_uniform(const rc_grid *g, rc_err *err);
 
 #endif

@@ -22,8 +22,9 @@
  * it is (rc_read_opts.nonuniform: then its positions follow the size).
  *
  * Memory: meta.yml is at most CE_META_MAX bytes, all members together
- * unpack to at most CE_TOTAL_MAX (io_zip.c's bound), and no container
- * nests in a member.
+ * unpack to at most CE_TOTAL_MAX (io_zip.c's bound; a gzip-compressed
+ * member is charged what it unzips to plus what it decodes to), and no
+ * container nests in a member.
  */
 #include "io_internal.h"
 #include "units.h"
@@ -253,6 +254,20 @@ read_topo(zip_t *za, const struct topo *p, const rc_read_opts *o,
 		    "them one by one", (size_t)CE_TOTAL_MAX);
 	}
 	*budget -= len;
+	if (len >= 2 && b[0] == 0x1f && b[1] == 0x8b) {
+		/* gzip-compressed: what it decodes to is charged too */
+		uint64_t decoded = rc__gzip_size(b, len, *budget);
+
+		if (decoded > *budget) {
+			free(b);
+			return rc_seterr(err, "contact.engineering container: "
+			    "'%s' (%s): gzip-compressed, its measurements unpack "
+			    "to over %zu bytes: unzip it and read them one by one",
+			    p->name, rc__io_quote(q, sizeof(q), p->file,
+			    strlen(p->file)), (size_t)CE_TOTAL_MAX);
+		}
+		*budget -= decoded;
+	}
 	if (o != NULL)
 		mo = *o;
 	else

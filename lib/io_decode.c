@@ -188,3 +188,26 @@ rc__decode_open(rc_in *in, enum rc_decoding how, char *msg, rc_err *err)
 	}
 	return fp;
 }
+
+uint64_t
+rc__gzip_size(const unsigned char *b, size_t n, uint64_t limit)
+{
+	char msg[RC_DECODE_MSG], chunk[65536];
+	uint64_t size = 0;
+	rc_err err;
+	rc_in in;
+	FILE *mem, *fp;
+	size_t got;
+
+	if ((mem = fmemopen((void *)b, n, "rb")) == NULL)
+		return 0;
+	rc__in_init(&in, mem);
+	if ((fp = rc__decode_open(&in, RC_DECODE_GZIP, msg, &err)) != NULL) {
+		while (size <= limit &&
+		    (got = fread(chunk, 1, sizeof(chunk), fp)) > 0)
+			size += got;
+		fclose(fp);
+	}
+	fclose(mem);
+	return size;
+}

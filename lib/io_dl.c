@@ -8,15 +8,17 @@
 #include <pthread.h>
 #include <stddef.h>
 
-/* The shared libraries to load: their sonames, found by the Makefile. */
+/* The shared libraries to load: their sonames, found by the Makefile;
+ * else Debian 12's (those of the packages the errors name, not the -dev
+ * packages' libzip.so symlinks). */
 #ifndef RC_ZIP_SONAME
-#define RC_ZIP_SONAME "libzip.so"
+#define RC_ZIP_SONAME "libzip.so.4"
 #endif
 #ifndef RC_XML_SONAME
-#define RC_XML_SONAME "libxml2.so"
+#define RC_XML_SONAME "libxml2.so.2"
 #endif
 #ifndef RC_YAML_SONAME
-#define RC_YAML_SONAME "libyaml.so"
+#define RC_YAML_SONAME "libyaml-0.so.2"
 #endif
 
 struct rc__dl_zip_api rc__dl_zip_api;

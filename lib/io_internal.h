@@ -143,6 +143,10 @@ double rc__io_per_metre(const char *u);
 enum rc_decoding { RC_DECODE_GZIP, RC_DECODE_UTF16 };
 FILE *rc__decode_open(rc_in *in, enum rc_decoding how, char *msg,
     rc_err *err);
+/* What the gzip data b[0..n) decode to, in bytes, counted up to just
+ * past limit (then it stops); a damaged stream counts what decodes before
+ * the damage (its reader reports that). */
+uint64_t rc__gzip_size(const unsigned char *b, size_t n, uint64_t limit);
 
 /* The rest of the input in memory (*buf malloc'ed, *len bytes), growing
  * with what the input really holds. */

@@ -2,6 +2,7 @@
 /* psd.c - 2D and radial power spectra, spectral moments, height-difference
  * autocorrelation (conventions in psd.h). */
 #include "psd.h"
+#include "gridcheck.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -94,6 +95,8 @@ forward(const rc_grid *g, rc_fft *fft, rc_fft *own, rc_fft **use, int demean,
 	size_t n = rc_grid_size(g);
 
 	memset(own, 0, sizeof(*own));
+	if (rc_grid_check_uniform(g, err) != 0)
+		return -1;
 	if (g->valid != NULL)
 		return rc_seterr(err, "the grid has missing points: a spectrum "
 		    "needs every point (fill them with surfwarp --fill)");
@@ -604,12 +607,13 @@ rc_acf_ex(const rc_grid *g, rc_fft *fft, int half, rc_acf_point **pts,
 {
 	int rc;
 
-	if (g->valid != NULL) {
-		*pts = NULL;
-		*npts = 0;
+	*pts = NULL;
+	*npts = 0;
+	if (rc_grid_check_uniform(g, err) != 0)
+		return -1;
+	if (g->valid != NULL)
 		return rc_seterr(err, "the grid has missing points: the ACF needs "
 		    "every point (fill them with surfwarp --fill)");
-	}
 	if (!g->periodic)
 		return acf_nonperiodic(g, half, pts, npts, err);
 	rc = acf_periodic(g, fft, pts, npts, err);
@@ -704,6 +708,8 @@ rc_psd1d(const rc_grid *g, enum rc_psd1d_dir dir, enum rc_window window,
 
 	*pts = NULL;
 	*npts = 0;
+	if (rc_grid_check_uniform(g, err) != 0)
+		return -1;
 	if (g->valid != NULL)
 		return rc_seterr(err, "the grid has missing points: a spectrum "
 		    "needs every point (fill them with surfwarp --fill)");

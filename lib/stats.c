@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: GPL-3.0-or-later */
 /* stats.c - height statistics, Phi1..Phi9, gradient tensor by height. */
 #include "stats.h"
+#include "gridcheck.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -249,6 +250,8 @@ scaled_copy(const rc_grid *g, rc_grid **scaled, int *e, rc_err *err)
 
 	*scaled = NULL;
 	*e = 0;
+	if (rc_grid_check_uniform(g, err) != 0)
+		return -1;
 	for (size_t k = 0; k < n; k++)
 		if (isfinite(g->z[k]))
 			zmax = fmax(zmax, fabs(g->z[k]));

@@ -30,6 +30,13 @@ check_nonuni(const rc_grid *g, rc_err *err)
 	if (g->x == NULL || g->ny != 1 || g->nx < 2)
 		return rc_seterr(err, "not a line scan with its positions "
 		    "(%zux%zu)", g->nx, g->ny);
+	/* a repeated or decreasing x makes a step of 0 or less: the slopes
+	 * and the spectrum's k range divide by it */
+	for (size_t i = 0; i + 1 < g->nx; i++)
+		if (!(g->x[i + 1] > g->x[i]) || !isfinite(g->x[i + 1] - g->x[i]))
+			return rc_seterr(err, "positions must strictly increase: "
+			    "x[%zu] = %g, x[%zu] = %g", i, g->x[i], i + 1,
+			    g->x[i + 1]);
 	return 0;
 }
 
@@ -119,7 +126,7 @@ rc_nonuni_psd(const rc_grid *g, enum rc_window window, rc_psd1d_point **pts,
 {
 	const double *x = g->x;
 	size_t n = g->nx, nq;
-	double L, min_step, *y = NULL;
+	double L, *y = NULL;
 	rc_nonuni_stats st;
 
 	*pts = NULL;
@@ -143,15 +150,8 @@ rc_nonuni_psd(const rc_grid *g, enum rc_window window, rc_psd1d_point **pts,
 		return rc_seterr(err, "%zu of %zu points are missing: the spectrum "
 		    "needs every point", st.n_missing, n);
 	L = x[n - 1] - x[0];
-	min_step = L;
-	for (size_t i = 0; i + 1 < n; i++)
-		min_step = fmin(min_step, x[i + 1] - x[i]);
-	/* k < L / min_step and q_k below 2 pi / (L / (n - 1)), the mean step:
-	 * k < n - 1 */
-	nq = (size_t)floor(L / min_step);
-	if (nq > n - 1)
-		nq = n - 1;
-	nq = nq > 0 ? nq - 1 : 0;
+	/* q_k below 2 pi / (L / (n - 1)), the mean step: k < n - 1 */
+	nq = n - 2;
 	if ((y = rc_malloc(n * sizeof(*y), err)) == NULL)
 		return -1;
 	for (size_t i = 0; i < n; i++) {

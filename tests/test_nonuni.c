@@ -12,6 +12,9 @@
 #include <string.h>
 
 #include "io.h"
+#include "psd.h"
+#include "solver.h"
+#include "stats.h"
 #include "stats_nonuni.h"
 #include "units.h"
 #include "testlib.h"
@@ -63,6 +66,23 @@ by_hand(void)
 	    strstr(err.msg, "no two neighbouring") != NULL,
 	    "no valid segment: refused ('%s')", err.msg);
 	rc_grid_free(g);
+	/* a repeated x: refused by statistics and spectrum alike (it gave
+	 * inf and NaN) */
+	{
+		const double xr[] = { 0, 1, 1, 4 };
+		rc_psd1d_point *pts = NULL;
+		size_t npts = 0;
+
+		g = line_scan(xr, h, 4);
+		test_true(rc_nonuni_stats_compute(g, &s, &err) != 0 &&
+		    strstr(err.msg, "strictly increase") != NULL,
+		    "repeated x: statistics refused ('%s')", err.msg);
+		test_true(rc_nonuni_psd(g, RC_WINDOW_NONE, &pts, &npts, &err) != 0
+		    && pts == NULL, "repeated x: spectrum refused ('%s')",
+		    err.msg);
+		free(pts);
+		rc_grid_free(g);
+	}
 }
 
 /* n positions on [0, 1], both ends included, the others random (a fixed
@@ -282,6 +302,49 @@ surface_topography_files(void)
 	rc_grid_free(g);
 }
 
+/* What assumes the uniform step lx/nx refuses a grid with positions,
+ * naming --uniform (grid.h): the solver, statistics, spectra, ACF. */
+static void
+uniform_only(void)
+{
+	const double x[] = { 0, 1, 3, 4 }, h[] = { 0, 2, 2, 0 };
+	rc_grid *g = line_scan(x, h, 4);
+	rc_solver_opts so;
+	rc_solver *sv;
+	rc_stats st;
+	rc_psd1d_point *p1 = NULL;
+	rc_psd_bin *pb = NULL;
+	rc_acf_point *pa = NULL;
+	size_t n = 0;
+	rc_err err;
+
+	rc_solver_defaults(&so);
+	sv = rc_solver_new(g, &so, &err);
+	test_true(sv == NULL && strstr(err.msg, "--uniform") != NULL,
+	    "positions: solver refused ('%s')", sv ? "made" : err.msg);
+	rc_solver_free(sv);
+	err.msg[0] = '\0';
+	test_true(rc_stats_compute(g, NULL, RC_DERIV_FD, &st, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: statistics refused ('%s')", err.msg);
+	err.msg[0] = '\0';
+	test_true(rc_psd1d(g, RC_PSD1D_X, RC_WINDOW_NONE, &p1, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: 1D spectrum refused ('%s')", err.msg);
+	free(p1);
+	err.msg[0] = '\0';
+	test_true(rc_psd_radial(g, NULL, 5, &pb, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: radial spectrum refused ('%s')", err.msg);
+	free(pb);
+	err.msg[0] = '\0';
+	test_true(rc_acf(g, NULL, &pa, &n, &err) != 0 &&
+	    strstr(err.msg, "--uniform") != NULL,
+	    "positions: ACF refused ('%s')", err.msg);
+	free(pa);
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -290,5 +353,6 @@ main(void)
 	tent_spectrum();
 	sine_spectrum();
 	surface_topography_files();
+	uniform_only();
 	return test_summary();
 }

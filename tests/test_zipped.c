@@ -491,6 +491,68 @@ gzip_member(void)
 	}
 }
 
+/* A gzip member charged what it decodes to, not its compressed length:
+ * a little table, then 1025 gzip members of 1 MiB of blank lines each
+ * (some 1 KiB each: gzip allows concatenation), decode to over the
+ * container's bound of 1 GiB and are refused. */
+static void
+gzip_member_bomb(void)
+{
+	const char *path = test_path("gzbomb.zip");
+	static const char yml[] = "surfaces:\n- topographies:\n  - name: m\n"
+	    "    datafile: {original: m.txt.gz}\n";
+	static const char table[] = "0 1\n1 2\n2 4\n3 8\n";
+	const char *names[] = { "meta.yml", "m.txt.gz" };
+	const char *texts[2] = { yml, NULL };
+	size_t lens[2] = { 0 }, blank = (size_t)1 << 20, copies = 1025, cap;
+	size_t nt, nb;
+	unsigned char *lines = malloc(blank), *t, *one, *all;
+	z_stream z;
+	rc_err err;
+	rc_grid *g;
+
+	memset(lines, '\n', blank);
+	cap = deflateBound(&(z_stream){ 0 }, blank) + 64;
+	t = malloc(cap);
+	one = malloc(cap);
+	for (int k = 0; k < 2; k++) {
+		memset(&z, 0, sizeof(z));
+		deflateInit2(&z, 9, Z_DEFLATED, 16 + MAX_WBITS, 8,
+		    Z_DEFAULT_STRATEGY);
+		z.next_in = k == 0 ? (unsigned char *)table : lines;
+		z.avail_in = (uInt)(k == 0 ? strlen(table) : blank);
+		z.next_out = k == 0 ? t : one;
+		z.avail_out = (uInt)cap;
+		if (deflate(&z, Z_FINISH) != Z_STREAM_END)
+			abort();
+		*(k == 0 ? &nt : &nb) = cap - z.avail_out;
+		deflateEnd(&z);
+	}
+	all = malloc(nt + copies * nb);
+	memcpy(all, t, nt);
+	for (size_t k = 0; k < copies; k++)
+		memcpy(all + nt + k * nb, one, nb);
+	texts[1] = (const char *)all;
+	lens[1] = nt + copies * nb;
+	put_zip(path, 2, names, texts, lens);
+	g = rc_grid_read(path, NULL, &err);
+	test_true(g == NULL && strstr(err.msg, "unpack to over") != NULL,
+	    "a gzip member of %zu bytes decoding to over 1 GiB: refused ('%s')",
+	    lens[1], g ? "read" : err.msg);
+	rc_grid_free(g);
+	/* the table with 5 of them (5 MiB) is read */
+	lens[1] = nt + 5 * nb;
+	put_zip(path, 2, names, texts, lens);
+	g = rc_grid_read(path, NULL, &err);
+	test_true(g != NULL && g->nx == 4 && g->z[3] == 8, "the same member "
+	    "decoding to 5 MiB: read (%s)", g ? "" : err.msg);
+	rc_grid_free(g);
+	free(all);
+	free(one);
+	free(t);
+	free(lines);
+}
+
 int
 main(void)
 {
@@ -500,5 +562,6 @@ main(void)
 	container();
 	nested();
 	gzip_member();
+	gzip_member_bomb();
 	return test_summary();
 }

@@ -22,6 +22,7 @@
 #include <string.h>
 
 #include "clock.h"
+#include "gridcheck.h"
 
 /* Free boundaries: the padded compliance's smallest eigenvalue, relative
  * to C(0, 0), below which it is refused as singular (its round-off is
@@ -49,6 +50,8 @@ rc_solver_new(const rc_grid *ind, const rc_solver_opts *o, rc_err *err)
 	rc_solver *s;
 	size_t n, bad;
 
+	if (rc_grid_check_uniform(ind, err) != 0)
+		return NULL;
 	if (o->method != RC_METHOD_FIRE && o->method != RC_METHOD_CG) {
 		rc_seterr(err, "unknown solver method %d", (int)o->method);
 		return NULL;
