@@ -41,9 +41,11 @@
 #include <netcdf.h>
 #include <netcdf_mem.h>
 
-/* The shared library to load: its soname, found by the Makefile. */
+/* The shared library to load: its soname, found by the Makefile, else
+ * Debian 12's (that of libnetcdf19, which the error names; not the -dev
+ * package's libnetcdf.so symlink). */
 #ifndef RC_NETCDF_SONAME
-#define RC_NETCDF_SONAME "libnetcdf.so"
+#define RC_NETCDF_SONAME "libnetcdf.so.19"
 #endif
 
 /* The functions of libnetcdf used here, typed from its header. */
