@@ -401,6 +401,32 @@ container(void)
 	rc_grid_free(g);
 }
 
+/* A container at path: meta.yml holding yml, and member holding the bytes
+ * of the file at file. */
+static void
+put_zip_of_file(const char *path, const char *yml, const char *member,
+    const char *file)
+{
+	const char *names[2] = { "meta.yml", member };
+	const char *texts[2] = { yml, NULL };
+	size_t lens[2] = { 0 };
+	FILE *fp = fopen(file, "rb");
+	long n;
+	char *buf;
+
+	if (fp == NULL || fseek(fp, 0, SEEK_END) != 0 || (n = ftell(fp)) <= 0)
+		abort();
+	rewind(fp);
+	if ((buf = malloc((size_t)n)) == NULL ||
+	    fread(buf, 1, (size_t)n, fp) != (size_t)n)
+		abort();
+	fclose(fp);
+	texts[1] = buf;
+	lens[1] = (size_t)n;
+	put_zip(path, 2, names, texts, lens);
+	free(buf);
+}
+
 /* A container inside a container is refused, not read in turn. */
 static void
 nested(void)
@@ -408,28 +434,11 @@ nested(void)
 	const char *inner = test_path("inner.zip"), *outer = test_path("outer.zip");
 	static const char yml[] = "surfaces:\n- topographies:\n  - name: in\n"
 	    "    datafile: {original: inner.zip}\n";
-	const char *names[] = { "meta.yml", "inner.zip" };
-	const char *texts[2] = { yml, NULL };
-	size_t lens[2] = { 0 };
-	long n;
-	FILE *fp;
-	char *buf;
 	rc_err err;
 	rc_grid *g;
 
 	put_container(inner, meta, "c.surf");
-	fp = fopen(inner, "rb");
-	fseek(fp, 0, SEEK_END);
-	n = ftell(fp);
-	rewind(fp);
-	buf = malloc((size_t)n);
-	if (fread(buf, 1, (size_t)n, fp) != (size_t)n)
-		abort();
-	fclose(fp);
-	texts[1] = buf;
-	lens[1] = (size_t)n;
-	put_zip(outer, 2, names, texts, lens);
-	free(buf);
+	put_zip_of_file(outer, yml, "inner.zip", inner);
 	g = rc_grid_read(outer, NULL, &err);
 	test_true(g == NULL && strstr(err.msg, "inside another") != NULL,
 	    "a container in a container: refused ('%s')", g ? "read" : err.msg);
@@ -444,12 +453,6 @@ gzip_member(void)
 	const char *path = test_path("gz.zip"), *gz = test_path("m.txt.gz");
 	static const char yml[] = "surfaces:\n- topographies:\n  - name: m\n"
 	    "    datafile: {original: m.txt.gz}\n    unit: nm\n";
-	const char *names[] = { "meta.yml", "m.txt.gz" };
-	const char *texts[2] = { yml, NULL };
-	size_t lens[2] = { 0 };
-	long n;
-	FILE *fp;
-	char *buf;
 	rc_err err;
 	rc_grid *g;
 	gzFile z;
@@ -466,18 +469,7 @@ gzip_member(void)
 			gzwrite(z, inner, sizeof(inner));
 		}
 		gzclose(z);
-		fp = fopen(gz, "rb");
-		fseek(fp, 0, SEEK_END);
-		n = ftell(fp);
-		rewind(fp);
-		buf = malloc((size_t)n);
-		if (fread(buf, 1, (size_t)n, fp) != (size_t)n)
-			abort();
-		fclose(fp);
-		texts[1] = buf;
-		lens[1] = (size_t)n;
-		put_zip(path, 2, names, texts, lens);
-		free(buf);
+		put_zip_of_file(path, yml, "m.txt.gz", gz);
 		g = rc_grid_read(path, NULL, &err);
 		if (layers == 1)
 			test_true(g != NULL && g->nx == 4 && g->z[3] == 8 &&
