@@ -62,10 +62,20 @@ void rc_fft_set_plan_limit(double seconds);
 const char *rc_fft_effort_name(enum rc_fft_effort e);
 int rc_fft_effort_parse(const char *name);
 
+/* The row stride of spec on the blocked path: nxc rounded up to whole
+ * 64-byte cache lines (4 complex values).  With rows nxc apart (odd for
+ * even nx) a block of RC_FFT_BLOCK columns straddles 3 lines of most
+ * rows instead of 2, and the columns' stage moves half as much again
+ * through the cache (the gain: rc_fft_convolve below; the values are the
+ * same bit for bit, FFTW runs the same codelets on other addresses).
+ * The plain pair's spectrum is the first ny*nxc values (rows nxc
+ * apart), as every user of spec expects; the buffer holds ny*nxs. */
+#define RC_FFT_SPEC_ROW(nx)	(((nx) / 2 + 1 + 3) / 4 * 4)
 typedef struct rc_fft {
 	size_t nx, ny, nxc;
+	size_t nxs;			/* RC_FFT_SPEC_ROW(nx) */
 	double *real;			/* nx*ny */
-	fftw_complex *spec;		/* ny*nxc */
+	fftw_complex *spec;		/* ny*nxc; room for ny*nxs */
 	/* The blocks rc_fft_huge placed real and spec in (what rc_fft_free
 	 * gives fftw_free); NULL: real and spec themselves. */
 	void *real_block, *spec_block;
@@ -145,12 +155,16 @@ void rc_fft_backward(rc_fft *f);	/* spec -> real (destroys spec) */
  * column DFT while the block is in cache, then the rows' c2r.  This saves
  * the separate pass over the spectrum and one trip of the columns through
  * memory.  Measured on this project's 2-core machine, one thread, ESTIMATE
- * plans, per convolution in units of FFTW's own 2D r2c + c2r pair: plain
- * (pair + multiplier pass) 1.12-1.27 at 1024^2 and 1.06-1.28 at 2048^2,
- * blocked 0.86-1.06 and 0.72-0.78; below 1024^2 the blocked path is slower
- * (1.27-1.44 at 256^2 ... 768^2, where the whole spectrum stays in cache
- * anyway).  Hence RC_FFT_BLOCKED_POINTS.  Both paths give the same values
- * to rounding. */
+ * plans, per convolution in units of FFTW's own 2D r2c + c2r pair
+ * (medians [ranges] of 5 runs of 5 rounds, issue 29): plain (pair +
+ * multiplier pass) 1.05 [1.03-1.07] at 512^2, 1.02 [0.98-1.05] at 1024^2,
+ * 1.03 [1.00-1.12] at 2048^2; blocked, spec's rows nxs apart, 1.09
+ * [1.04-1.19], 0.85 [0.78-0.90] and 0.71 [0.68-0.74] (rows nxc apart, as
+ * before: 1.11, 1.00, 1.04).  Blocks of 16, 32 or 64 columns, or 4 or 16
+ * rows, were within 0.04 of these (the same bits).  Below 1024^2 the
+ * blocked path is slower (the whole spectrum stays in cache anyway):
+ * hence RC_FFT_BLOCKED_POINTS.  Both paths give the same values to
+ * rounding. */
 #define RC_FFT_BLOCK		8
 #define RC_FFT_BLOCKED_POINTS	((size_t)1024 * 1024)
 typedef struct rc_fft_multiplier {

@@ -316,5 +316,8 @@ rc_elastic_max(const rc_elastic *e, double *v, int count)
 size_t
 rc_elastic_bytes(const rc_elastic *e)
 {
-	return (e->n + 3 * e->nxc * e->ny) * sizeof(double);
+	/* spec's rows nxs apart for the blocked path (fft.h) */
+	size_t spec_row = e->dist != NULL ? e->nxc : e->fft.nxs;
+
+	return (e->n + (2 * spec_row + e->nxc) * e->ny) * sizeof(double);
 }
