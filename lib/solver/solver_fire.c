@@ -59,6 +59,13 @@
 
 #define CHUNK		8192	/* points per range of a pass */
 
+/* contact[k] between the update pass and the next force pass: the point
+ * is on the wall, u == h (the update clamped it, or the start), so that
+ * the force pass need not read u and h; the force pass leaves the
+ * contact set C (0 or 1) for the mixing and update passes and for every
+ * reader after the solve. */
+#define ON_WALL		2
+
 int
 rc__fire_alloc(rc_solver *s, rc_err *err)
 {
@@ -90,9 +97,9 @@ wall_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
 {
 	const struct wall *w = ctx;
 	rc_solver *s = w->s;
-	size_t k;
-	double p = w->p, sum_d2 = 0, sum_s = 0, on = 0, pw = 0;
-	const double *u = s->u, *h = s->height, *v = s->fire_vel;
+	size_t k, on = 0;
+	double p = w->p, sum_d2 = 0, sum_s = 0, pw = 0;
+	const double *v = s->fire_vel;
 	unsigned char *contact = s->contact;
 
 	(void)st;
@@ -100,7 +107,7 @@ wall_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
 	for (k = k0; k < k1; k++) {
 		double implied = p + f[k];
 
-		if (u[k] == h[k] && implied > 0) {
+		if (contact[k] == ON_WALL && implied > 0) {
 			contact[k] = 1;
 			sum_s += implied;
 			on++;
@@ -114,7 +121,7 @@ wall_range(void *ctx, double *f, const rc__fire_step *st, size_t k0,
 	}
 	sum[0] += sum_d2;
 	sum[1] += sum_s;
-	sum[2] += on;
+	sum[2] += (double)on;
 	sum[3] += pw;
 }
 
@@ -142,7 +149,7 @@ update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
 {
 	rc_solver *s = ((struct wall *)ctx)->s;
-	const unsigned char *contact = s->contact;
+	unsigned char *contact = s->contact;
 	const double *h = s->height;
 	double *u = s->u, *v = s->fire_vel;
 	double dt = st->dt, mix_v = st->mix_v, mix_a = st->mix_a;
@@ -151,19 +158,46 @@ update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
 
 	(void)sum;
 	(void)least;
-	for (k = k0; k < k1; k++) {
+	k = k0;
+#ifdef RC__V2
+	for (; k + 2 <= k1; k += 2) {
+		rc__v2d ak, vk, uk, hk;
+		rc__v2l held = rc__v2_held(contact + k), clamp;
+
+		memcpy(&ak, a + k, sizeof(ak));
+		memcpy(&vk, v + k, sizeof(vk));
+		memcpy(&uk, u + k, sizeof(uk));
+		memcpy(&hk, h + k, sizeof(hk));
+		ak = (rc__v2d)((rc__v2l)ak & ~held);
+		if (restart)
+			vk = (rc__v2d){ 0, 0 };
+		vk = mix_v * (vk + dt * ak) + mix_a * ak;
+		uk = uk + dt * vk;
+		clamp = uk <= hk;
+		uk = (rc__v2d)(((rc__v2l)hk & clamp) |
+		    ((rc__v2l)uk & ~clamp));
+		vk = (rc__v2d)((rc__v2l)vk & ~clamp);
+		memcpy(u + k, &uk, sizeof(uk));
+		memcpy(v + k, &vk, sizeof(vk));
+		contact[k] = clamp[0] ? ON_WALL : 0;
+		contact[k + 1] = clamp[1] ? ON_WALL : 0;
+	}
+#endif
+	for (; k < k1; k++) {
 		double ak = contact[k] ? 0 : a[k], vk = restart ? 0 : v[k];
 		double uk;
 
 		vk = mix_v * (vk + dt * ak) + mix_a * ak;
 		uk = u[k] + dt * vk;
-
 		if (uk <= h[k]) {
-			uk = h[k];
-			vk = 0;
+			u[k] = h[k];
+			v[k] = 0;
+			contact[k] = ON_WALL;
+		} else {
+			u[k] = uk;
+			v[k] = vk;
+			contact[k] = 0;
 		}
-		u[k] = uk;
-		v[k] = vk;
 	}
 }
 
@@ -209,6 +243,7 @@ fire_start(rc_solver *s)
 		if (u[k] < h[k])
 			u[k] = h[k];
 		v[k] = 0;
+		s->contact[k] = u[k] == h[k] ? ON_WALL : 0;
 	}
 }
 

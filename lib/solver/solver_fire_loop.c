@@ -217,14 +217,35 @@ mixing_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
 
 			aa += ak * ak;
 		}
-	else
-		for (k = k0; k < k1; k++) {
+	else {
+		k = k0;
+#ifdef RC__V2
+		for (; k + 2 <= k1; k += 2) {
+			rc__v2d ak, vk, p_aa, p_av, p_vv;
+			rc__v2l held = rc__v2_held(contact + k);
+
+			memcpy(&ak, a + k, sizeof(ak));
+			memcpy(&vk, v + k, sizeof(vk));
+			ak = (rc__v2d)((rc__v2l)ak & ~held);
+			p_aa = ak * ak;
+			p_av = ak * vk;
+			p_vv = vk * vk;
+			aa += p_aa[0];
+			av += p_av[0];
+			vv += p_vv[0];
+			aa += p_aa[1];
+			av += p_av[1];
+			vv += p_vv[1];
+		}
+#endif
+		for (; k < k1; k++) {
 			double ak = contact[k] ? 0 : a[k];
 
 			aa += ak * ak;
 			av += ak * v[k];
 			vv += v[k] * v[k];
 		}
+	}
 	sum[0] += aa;
 	sum[1] += av;
 	sum[2] += vv;
