@@ -51,7 +51,16 @@
  *   M0_SCALE    2     mean-mode mass (solver_fire.c)
  *
  * Cost: two FFT pairs, two scalings of the spectrum and three O(N)
- * passes per iteration.  The passes are the interaction's functions over
+ * passes per iteration.  Measured at 512^2 on the plain path (perf
+ * samples, one thread, the wall's solve at 10 pressures, 725
+ * iterations): the passes 0.78 FFT pairs an iteration (the wall's force
+ * 0.27, the mixing 0.20, the update 0.31; solver_fire.c says what they
+ * read and what made them 0.96 before), the two scalings 0.15
+ * (rc_fft_multiply, 0.12 with that loop vectorised); the solve's seconds
+ * 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating runs each).
+ * make bench's iter_in_pairs on this VM moves 0.5 between runs (medians
+ * of 12 runs of 3 rounds: 3.35 against 3.46 before at 512^2, 2.78
+ * against 2.89 at 1024^2).  The passes are the interaction's functions over
  * ranges of points, called once per range (never per point).  On the
  * plain path a range is a chunk of parts->grain points or, with grain 0,
  * each thread's share of the grid (the order in which each interaction
