@@ -156,10 +156,11 @@ wall_forced(void *ctx, const double *sum, double least, rc__fire_report *r)
  * and the mark ON_WALL where it clamps (u = h; elsewhere u > h, so the
  * mark is exactly u == h), the contact set C it read being no longer
  * needed.  Two points at a time (the lanes of rc__v2d: masks for the
- * selects), the rest one by one.  adh_update_range's twin without the level shift and the heights' sum;
- * kept apart because the clamp is written differently there (fmax, then
- * v = 0 where u == h, against uk <= h here) and the rows must stay bit
- * for bit what each interaction gave before the one loop. */
+ * selects), the rest one by one.  adh_update_range's twin without the
+ * level shift and the heights' sum; kept apart because the clamp is
+ * written differently there (fmax, then v = 0 where u == h, against uk
+ * <= h here) and the rows must stay bit for bit what each interaction
+ * gave before the one loop. */
 static void
 update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)

@@ -198,9 +198,10 @@ run_pass(const rc__fire_parts *pt, rc__fire_pass *pass, void *ctx,
  * with mean_sums the sums of a and v to sum[3..4].  Read only: the update
  * applies the clamp and the restart again, so a and v are not written
  * twice.  Without a restart or mean_sums (every step but restarts for
- * the wall and for adhesion under load) the products two points at a time (rc__v2d: the mask of C in
- * place of a branch), added one by one in the points' order: the scalar
- * loop's sums bit for bit, 10 to 15% faster at 512^2. */
+ * the wall and for adhesion under load) the products two points at a
+ * time (rc__v2d: the mask of C in place of a branch), added one by one
+ * in the points' order: the scalar loop's sums bit for bit, 10 to 15%
+ * faster at 512^2. */
 static void
 mixing_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
