@@ -70,8 +70,10 @@
  * times.  All in process CPU seconds (one thread: the work's own time).
  * Medians over the rounds: pair_seconds, solve_seconds, iter_in_pairs
  * (goals 3.0 at 512^2, 2.3 at 1024^2), analysis_in_solve (the analysis
- * over the solve: goal at most 0.25), plain_ and blocked_iter_in_pairs.  BENCH_ITER_ONLY=1
- * prints only these.
+ * over the solve: goal at most 0.25), plain_ and blocked_iter_in_pairs;
+ * then the spread of iter_in_pairs over the rounds, iter_in_pairs_min and
+ * _max.  BENCH_ITER_ONLY=1 prints only these; BENCH_ITER_ROUNDS=R runs R
+ * rounds (1 ... ITER_ROUNDS_MAX, default ITER_ROUNDS) on a noisy machine.
  */
 #include <math.h>
 #include <stdint.h>
@@ -347,6 +349,7 @@ contention(void)
 }
 
 #define ITER_ROUNDS	5
+#define ITER_ROUNDS_MAX	99
 
 /* The solve's CPU seconds at p* = 0.05 with the transforms blocked from
  * block_points on (fft.h); with plan not NULL also the contact analysis's
@@ -395,21 +398,43 @@ fail:
 	return -1;
 }
 
-/* The one-thread rows (see the top of the file) of the first ns sizes. */
+/* The rounds of the one-thread rows: BENCH_ITER_ROUNDS, else
+ * ITER_ROUNDS; -1 after a message if it is not a count in range. */
 static int
-iteration_rows(size_t ns)
+iter_rounds(void)
+{
+	const char *e = getenv("BENCH_ITER_ROUNDS");
+	char *end;
+	long r;
+
+	if (e == NULL || *e == '\0')
+		return ITER_ROUNDS;
+	r = strtol(e, &end, 10);
+	if (*end != '\0' || r < 1 || r > ITER_ROUNDS_MAX) {
+		fprintf(stderr, "bench_gfmd: BENCH_ITER_ROUNDS: '%s' is not a "
+		    "count of rounds from 1 to %d\n", e, ITER_ROUNDS_MAX);
+		return -1;
+	}
+	return (int)r;
+}
+
+/* The one-thread rows (see the top of the file) of the first ns sizes,
+ * in rounds rounds. */
+static int
+iteration_rows(size_t ns, int rounds)
 {
 	size_t sizes[] = { 256, 512, 1024, 2048 }, z;
 
 	rc_fft_set_threads(1);
 	printf("\n# one thread, FIRE at p* = 0.05, process CPU seconds, medians "
-	    "of %d rounds\n", ITER_ROUNDS);
+	    "of %d rounds\n", rounds);
 	printf("n\titerations\tpair_seconds\tsolve_seconds\titer_in_pairs\t"
-	    "analysis_in_solve\tplain_iter_in_pairs\tblocked_iter_in_pairs\n");
+	    "analysis_in_solve\tplain_iter_in_pairs\tblocked_iter_in_pairs\t"
+	    "iter_in_pairs_min\titer_in_pairs_max\n");
 	for (z = 0; z < ns; z++) {
 		size_t n = sizes[z];
 		rc_grid *g = SURFACE(n);
-		double t[6][ITER_ROUNDS], med[6];
+		double t[6][ITER_ROUNDS_MAX], med[6], lo, hi;
 		long iters = 0;
 		rc_fft plan;
 		rc_err err;
@@ -419,7 +444,7 @@ iteration_rows(size_t ns)
 			return 1;
 		}
 		/* Each solve in pairs of a pair timed just before it. */
-		for (int k = 0; k < ITER_ROUNDS; k++) {
+		for (int k = 0; k < rounds; k++) {
 			double pair[3], solve[3];
 
 			fft_pair_seconds(n, &pair[0]);
@@ -439,9 +464,12 @@ iteration_rows(size_t ns)
 			t[5][k] = solve[0] / (double)iters / pair[0];
 		}
 		for (int c = 0; c < 6; c++)
-			med[c] = median(t[c], ITER_ROUNDS);
-		printf("%zu\t%ld\t%.5f\t%.4f\t%.2f\t%.3f\t%.2f\t%.2f\n", n,
-		    iters, med[0], med[1], med[5], med[2], med[3], med[4]);
+			med[c] = median(t[c], rounds);	/* sorts t[c] */
+		lo = t[5][0];
+		hi = t[5][rounds - 1];
+		printf("%zu\t%ld\t%.5f\t%.4f\t%.2f\t%.3f\t%.2f\t%.2f\t%.2f\t"
+		    "%.2f\n", n, iters, med[0], med[1], med[5], med[2], med[3],
+		    med[4], lo, hi);
 		fflush(stdout);
 		rc_fft_free(&plan);
 		rc_grid_free(g);
@@ -454,17 +482,20 @@ int
 main(int argc, char **argv)
 {
 	size_t sizes[] = { 256, 512, 1024, 2048, 4096 }, ns = 4, z;
-	int threads = rc_fft_set_threads(0);
+	int threads = rc_fft_set_threads(0), rounds;
 
 	(void)argc;
 	rc_threads_wait_passively(threads, argv);	/* as the tools do */
+	rounds = iter_rounds();
 
 	if (getenv("BENCH_BIG"))
 		ns = 5;
 	if (getenv("BENCH_QUICK"))
 		ns = 2;
+	if (rounds < 0)
+		return 2;
 	if (getenv("BENCH_ITER_ONLY"))	/* only the one-thread rows */
-		return iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3);
+		return iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3, rounds);
 	printf("# gfmd-solve solvers, %d threads, p* = 0.05, H = 0.8, lambda_r = L/2,"
 	    " lambda_s = L/64\n", threads);
 	printf("n\tboundary\tmethod\titerations\tfft_pairs\tpairs_per_iter\t"
@@ -480,5 +511,6 @@ main(int argc, char **argv)
 			return 1;
 		rc_grid_free(g);
 	}
-	return contention() || iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3);
+	return contention() || iteration_rows(ns == 5 ? 4 : ns == 2 ? 2 : 3,
+	    rounds);
 }

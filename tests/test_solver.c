@@ -404,6 +404,56 @@ blocked_agrees(void)
 	rc_grid_free(g);
 }
 
+/* FIRE's contact set after a solve, converged or stopped by --max-iter,
+ * on the plain and the blocked path: the force pass's C, 0 or 1 (the
+ * update's mark ON_WALL, solver_fire.c, never left behind), every point
+ * of C on the indenter (u == h exactly) under a positive pressure, and
+ * the same set as the one the solution's pressures imply (sigma > 0). */
+static void
+fire_contact_is_c(void)
+{
+	rc_grid *g = rc_test_rough(96, 1.0 / 16, 3);
+	size_t n = g->nx * g->ny;
+	int path, max_iter;
+
+	for (path = 0; path < 2; path++)
+		for (max_iter = 5; max_iter <= 100000; max_iter *= 20000) {
+			rc_solver_opts o;
+			rc_solver *s;
+			size_t k, bad = 0, off = 0, cs = 0;
+			const unsigned char *c;
+			const double *u, *sigma;
+			int st;
+
+			rc_solver_defaults(&o);
+			o.method = RC_METHOD_FIRE;
+			o.max_iter = max_iter;
+			o.fft_block_points = path ? 0 : SIZE_MAX;
+			s = rc_test_solver(g, &o);
+			st = rc_test_solve(s, 0.05, NULL);
+			test_int(st, max_iter == 5 ? 1 : 0, "fire contact %s max_iter %d: "
+			    "status", path ? "blocked" : "plain", max_iter);
+			c = rc_solver_contact(s);
+			u = rc_solver_displacement(s);
+			sigma = rc_solver_pressure(s);
+			for (k = 0; k < n; k++) {
+				bad += c[k] > 1;
+				off += c[k] && !(u[k] == g->z[k] && sigma[k] > 0);
+				cs += c[k] != (sigma[k] > 0);
+			}
+			test_int((long long)bad, 0, "fire contact %s max_iter %d: 0 or 1",
+			    path ? "blocked" : "plain", max_iter);
+			test_int((long long)off, 0, "fire contact %s max_iter %d: on the "
+			    "indenter, pressed", path ? "blocked" : "plain", max_iter);
+			test_int((long long)cs, 0, "fire contact %s max_iter %d: sigma > 0 "
+			    "exactly there", path ? "blocked" : "plain", max_iter);
+			test_true(rc_test_n_contact(s, n) > 0, "fire contact %s max_iter "
+			    "%d: some contact", path ? "blocked" : "plain", max_iter);
+			rc_solver_free(s);
+		}
+	rc_grid_free(g);
+}
+
 int
 main(void)
 {
@@ -429,5 +479,6 @@ main(void)
 	blocked_agrees();
 	rc_fft_set_threads(1);
 	fire_scaling();
+	fire_contact_is_c();
 	return test_summary();
 }

@@ -51,7 +51,16 @@
  *   M0_SCALE    2     mean-mode mass (solver_fire.c)
  *
  * Cost: two FFT pairs, two scalings of the spectrum and three O(N)
- * passes per iteration.  The passes are the interaction's functions over
+ * passes per iteration.  Measured at 512^2 on the plain path (perf
+ * samples, one thread, the wall's solve at 10 pressures, 725
+ * iterations): the passes 0.78 FFT pairs an iteration (the wall's force
+ * 0.27, the mixing 0.20, the update 0.31; solver_fire.c says what they
+ * read and what made them 0.96 before), the two scalings 0.15
+ * (rc_fft_multiply, 0.12 with that loop vectorised); the solve's seconds
+ * 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating runs each).
+ * make bench's iter_in_pairs on this VM moves 0.5 between runs (medians
+ * of 12 runs of 3 rounds: 3.35 against 3.46 before at 512^2, 2.78
+ * against 2.89 at 1024^2).  The passes are the interaction's functions over
  * ranges of points, called once per range (never per point).  On the
  * plain path a range is a chunk of parts->grain points or, with grain 0,
  * each thread's share of the grid (the order in which each interaction
@@ -188,7 +197,11 @@ run_pass(const rc__fire_parts *pt, rc__fire_pass *pass, void *ctx,
  * clamp) and v = 0 on a restart: adds |a|^2, a.v and |v|^2 to sum[0..2],
  * with mean_sums the sums of a and v to sum[3..4].  Read only: the update
  * applies the clamp and the restart again, so a and v are not written
- * twice. */
+ * twice.  Without a restart or mean_sums (every step but restarts for
+ * the wall and for adhesion under load) the products two points at a
+ * time (rc__v2d: the mask of C in place of a branch), added one by one
+ * in the points' order: the scalar loop's sums bit for bit, 10 to 15%
+ * faster at 512^2. */
 static void
 mixing_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
@@ -217,14 +230,35 @@ mixing_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
 
 			aa += ak * ak;
 		}
-	else
-		for (k = k0; k < k1; k++) {
+	else {
+		k = k0;
+#ifdef RC__V2
+		for (; k + 2 <= k1; k += 2) {
+			rc__v2d ak, vk, p_aa, p_av, p_vv;
+			rc__v2l held = rc__v2_held(contact + k);
+
+			memcpy(&ak, a + k, sizeof(ak));
+			memcpy(&vk, v + k, sizeof(vk));
+			ak = (rc__v2d)((rc__v2l)ak & ~held);
+			p_aa = ak * ak;
+			p_av = ak * vk;
+			p_vv = vk * vk;
+			aa += p_aa[0];
+			av += p_av[0];
+			vv += p_vv[0];
+			aa += p_aa[1];
+			av += p_av[1];
+			vv += p_vv[1];
+		}
+#endif
+		for (; k < k1; k++) {
 			double ak = contact[k] ? 0 : a[k];
 
 			aa += ak * ak;
 			av += ak * v[k];
 			vv += v[k] * v[k];
 		}
+	}
 	sum[0] += aa;
 	sum[1] += av;
 	sum[2] += vv;
