@@ -15,7 +15,10 @@ PKGS     = fftw3 gsl libpng libzip libxml-2.0 netcdf zlib yaml-0.1
 OPTFLAGS ?= -O2 -g
 CFLAGS  ?= $(OPTFLAGS)
 WARN     = -Wall -Wextra -Wshadow -Wstrict-prototypes -Wmissing-prototypes
-STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L
+# -ffp-contract=off: a*b + c rounded twice, as ISO C and gcc's -std=c11
+# do; clang (and gcc in GNU mode) would fuse it into an FMA where the
+# target has one, and the rows' bits would depend on compiler and flags
+STD      = -std=c11 -D_DEFAULT_SOURCE -D_POSIX_C_SOURCE=200809L -ffp-contract=off
 PKG_CONFIG ?= pkg-config
 PKG_CFLAGS := $(shell $(PKG_CONFIG) --cflags $(PKGS) 2>/dev/null)
 # libnetcdf, libzip, libxml2 and libyaml are compiled against but loaded

@@ -316,7 +316,8 @@ rc_elastic_max(const rc_elastic *e, double *v, int count)
 size_t
 rc_elastic_bytes(const rc_elastic *e)
 {
-	/* spec's rows nxs apart for the blocked path (fft.h) */
+	/* rc_fft_init gives spec room for rows nxs apart (fft.h); a
+	 * distributed operator's spectrum is its own, rows nxc apart */
 	size_t spec_row = e->dist != NULL ? e->nxc : e->fft.nxs;
 
 	return (e->n + (2 * spec_row + e->nxc) * e->ny) * sizeof(double);

@@ -155,7 +155,8 @@ rc_halfspace_apply(rc_halfspace *e, const double *sigma, double *out)
 size_t
 rc_halfspace_bytes(const rc_halfspace *e)
 {
-	size_t m = e->fft.nxc * e->fft.ny;
+	/* spec holds ny rows of nxs (fft.h), the stiffness ny of nxc */
+	size_t m = e->fft.nxc * e->fft.ny, spec = e->fft.nxs * e->fft.ny;
 
-	return (e->fft.nx * e->fft.ny + 3 * m) * sizeof(double);
+	return (e->fft.nx * e->fft.ny + 2 * spec + m) * sizeof(double);
 }

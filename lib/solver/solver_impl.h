@@ -277,7 +277,11 @@ rc__fire_mass0(double k_min, double n_contact, double points)
  *     sum[3..4]; mixed (may be NULL) makes the first three those of the
  *     step the update takes and may lower the step *dt;
  *   update (x = a): v' = mix_v (v + dt a) + mix_a a, u += dt v', the
- *     clamp at h; updated (may be NULL) follows it.
+ *     clamp at h; updated (may be NULL) follows it.  An interaction's
+ *     update may leave its own marks in contact for its next force pass
+ *     (the wall's ON_WALL, solver_fire.c), so every force pass follows
+ *     an update: a next hook that answers STALE (force again without an
+ *     update) cannot be combined with such an interaction.
  * The plain path runs a pass on chunks of grain points, or with grain 0
  * on each thread's share; on the blocked transforms (fft.h), when fuse
  * is set, on each block of rows between its row transforms (the update
@@ -294,7 +298,9 @@ rc__fire_mass0(double k_min, double n_contact, double points)
  * zero), GCC's and Clang's vector extension (SSE2 on x86-64), for the
  * wall's update and the loop's mixing pass: gcc 12 at -O2 vectorises
  * neither (a byte mask beside doubles), and element-wise operations in
- * the same order are the scalar code's bit for bit. */
+ * the same order are the scalar code's bit for bit, as long as no a*b + c
+ * is fused into an FMA (the Makefile's -ffp-contract=off; the scalar
+ * code's and the pairs' sums would then round differently). */
 #if defined(__GNUC__) || defined(__clang__)
 #define RC__V2
 typedef double rc__v2d __attribute__((vector_size(16)));
