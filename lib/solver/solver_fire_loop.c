@@ -55,12 +55,12 @@
  * samples, one thread, the wall's solve at 10 pressures, 725
  * iterations): the passes 0.78 FFT pairs an iteration (the wall's force
  * 0.27, the mixing 0.20, the update 0.31; solver_fire.c says what they
- * read and what made them 0.96 before), the two scalings 0.15
- * (rc_fft_multiply, 0.12 with that loop vectorised); the solve's seconds
- * 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating runs each).
- * make bench's iter_in_pairs on this VM moves 0.5 between runs (medians
- * of 12 runs of 3 rounds: 3.35 against 3.46 before at 512^2, 2.78
- * against 2.89 at 1024^2).  The passes are the interaction's functions over
+ * read and what made them 0.96 before), the two scalings 0.15 before
+ * rc_fft_multiply's loops were vectorised (0.12 measured with them); the
+ * solve's seconds 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating
+ * runs each).  make bench's iter_in_pairs on this VM moves by up to 0.5
+ * between runs, more than these gains: doc/performance.md gives a run's
+ * median with its spread.  The passes are the interaction's functions over
  * ranges of points, called once per range (never per point).  On the
  * plain path a range is a chunk of parts->grain points or, with grain 0,
  * each thread's share of the grid (the order in which each interaction
@@ -71,8 +71,9 @@
  * run on each block of rows between its row transforms: the c2r of K u,
  * the force pass and the r2c of f_eff; the c2r of a and the mixing sums;
  * the update and the r2c of the new u.  Below, the blocked path does not
- * pay (make bench, one thread, CPU time, in FFT pairs per iteration: 3.83
- * against 3.30 at 256^2, 3.02 against 3.05 at 512^2).  The mass's scaling
+ * pay (make bench, one thread, CPU time, FFT pairs per iteration, medians
+ * of 8 runs with spec's rows padded, fft.h: blocked 3.46 against plain
+ * 3.21 at 512^2; at 1024^2 blocked 2.50, plain 2.87).  The mass's scaling
  * uses a table of 1/(N m_q) made for each solve (mass_table: half a
  * double a point while it runs) instead of a division per mode.  Why not
  * one pair: step 3 needs f_eff, which needs K u of this step at the
