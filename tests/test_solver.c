@@ -409,15 +409,52 @@ blocked_agrees(void)
  * update's mark ON_WALL, solver_fire.c, never left behind), every point
  * of C on the indenter (u == h exactly) under a positive pressure, and
  * the same set as the one the solution's pressures imply (sigma > 0). */
+/* After a converged FIRE solve: the same pressure again starts from the
+ * solution, so the start must mark the points on the wall (u == h) for
+ * the first force pass (solver_fire.c): then the start's residual is the
+ * solution's and no iteration is taken; unmarked, those points would
+ * count as free and the residual be that of their whole pressure.  Then
+ * warm starts at a higher and a lower pressure converge. */
+static void
+fire_warm_start(rc_solver *s, const rc_grid *g, int path)
+{
+	rc_solve_result r;
+	rc_err err;
+	const double p[] = { 0.2, 0.01 };
+	size_t k, n = g->nx * g->ny, bad;
+	int i;
+
+	test_int(rc_solver_solve(s, 0.05, &r, &err), 0, "fire warm %s: again "
+	    "at the same pressure: converged", path ? "blocked" : "plain");
+	test_int(r.iterations, 0, "fire warm %s: again at the same pressure: "
+	    "iterations", path ? "blocked" : "plain");
+	for (i = 0; i < 2; i++) {
+		const unsigned char *c;
+		const double *u, *sigma;
+
+		test_int(rc_solver_solve(s, p[i], &r, &err), 0, "fire warm %s: "
+		    "p %g: converged", path ? "blocked" : "plain", p[i]);
+		c = rc_solver_contact(s);
+		u = rc_solver_displacement(s);
+		sigma = rc_solver_pressure(s);
+		for (k = 0, bad = 0; k < n; k++)
+			bad += c[k] > 1 || (c[k] && !(u[k] == g->z[k] &&
+			    sigma[k] > 0)) || (c[k] != 0) != (sigma[k] > 0);
+		test_int((long long)bad, 0, "fire warm %s: p %g: contact set",
+		    path ? "blocked" : "plain", p[i]);
+	}
+}
+
 static void
 fire_contact_is_c(void)
 {
 	rc_grid *g = rc_test_rough(96, 1.0 / 16, 3);
 	size_t n = g->nx * g->ny;
-	int path, max_iter;
+	static const int max_iters[] = { 5, 100000 };	/* stopped, converged */
+	int path, i, max_iter;
 
 	for (path = 0; path < 2; path++)
-		for (max_iter = 5; max_iter <= 100000; max_iter *= 20000) {
+		for (i = 0; i < 2; i++) {
 			rc_solver_opts o;
 			rc_solver *s;
 			size_t k, bad = 0, off = 0, cs = 0;
@@ -427,7 +464,7 @@ fire_contact_is_c(void)
 
 			rc_solver_defaults(&o);
 			o.method = RC_METHOD_FIRE;
-			o.max_iter = max_iter;
+			o.max_iter = max_iter = max_iters[i];
 			o.fft_block_points = path ? 0 : SIZE_MAX;
 			s = rc_test_solver(g, &o);
 			st = rc_test_solve(s, 0.05, NULL);
@@ -449,6 +486,8 @@ fire_contact_is_c(void)
 			    "exactly there", path ? "blocked" : "plain", max_iter);
 			test_true(rc_test_n_contact(s, n) > 0, "fire contact %s max_iter "
 			    "%d: some contact", path ? "blocked" : "plain", max_iter);
+			if (max_iter != 5)
+				fire_warm_start(s, g, path);
 			rc_solver_free(s);
 		}
 	rc_grid_free(g);
