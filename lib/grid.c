@@ -2,6 +2,8 @@
 /* grid.c - the grid type, its metadata and history. */
 #include "grid.h"
 
+#include "fft.h"
+
 #include <fftw3.h>
 #include <math.h>
 #include <stdarg.h>
@@ -60,20 +62,37 @@ rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
 	rc_grid *g;
 	double *z;
+	void *block;
 	size_t n;
 
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		return NULL;
 	n = nx * ny;
-	if ((z = fftw_alloc_real(n)) == NULL) {
-		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
-		    n * sizeof(double), nx, ny);
+	if ((z = rc_grid_values(n, &block, err)) == NULL)
+		return NULL;
+	memset(z, 0, n * sizeof(double));
+	if ((g = rc_grid_adopt(nx, ny, lx, ly, z, err)) == NULL) {
+		rc_fft_huge_free(z, block);
 		return NULL;
 	}
-	memset(z, 0, n * sizeof(double));
-	if ((g = rc_grid_adopt(nx, ny, lx, ly, z, err)) == NULL)
-		fftw_free(z);
+	g->z_block = block;
 	return g;
+}
+
+/* From 2 MB up on transparent huge pages (rc_fft_huge): a grid's first
+ * touch, by reading or by the memset above, faults once per 2 MB instead
+ * of 512 times (at 512^2 reading a grid took 9.5 ms of wall, 6 of them
+ * 530 faults and 2.5 the first look at the values the kernel copied in;
+ * 0.3 ms on huge pages: clock_gettime, quiet machine). */
+double *
+rc_grid_values(size_t n, void **block, rc_err *err)
+{
+	double *z = rc_fft_huge(n * sizeof(double), block);
+
+	if (z == NULL)
+		rc_seterr(err, "out of memory (asked for %zu bytes for %zu grid "
+		    "values)", n * sizeof(double), n);
+	return z;
 }
 
 rc_grid *
@@ -109,7 +128,7 @@ rc_grid_free(rc_grid *g)
 	for (size_t i = 0; i < g->nhistory; i++)
 		free(g->history[i]);
 	free(g->history);
-	fftw_free(g->z);
+	rc_fft_huge_free(g->z, g->z_block);
 	free(g->valid);
 	free(g->filled);
 	free(g->x);

@@ -78,6 +78,8 @@ typedef struct rc_grid {
 	char **history;		/* one command line per entry, oldest first */
 	size_t nhistory;
 	double *z;		/* nx*ny values, FFTW-aligned */
+	void *z_block;		/* what rc_grid_free frees for z: rc_fft_huge's
+				 * block (fft.h), NULL when z is adopted */
 	double *x;		/* NULL, or nx increasing positions (ny = 1) */
 } rc_grid;
 
@@ -89,6 +91,11 @@ void rc_grid_free(rc_grid *g);
  * the caller.  Saves a copy when a result is computed in place. */
 rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
     rc_err *err);
+/* Room for n grid values as rc_grid_new gives them (not zeroed): FFTW's
+ * alignment, from 2 MB up on transparent huge pages (fft.h, rc_fft_huge);
+ * *block is what rc_fft_huge_free takes with the values, and what a grid
+ * holding them keeps in z_block.  NULL and err set when out of memory. */
+double *rc_grid_values(size_t n, void **block, rc_err *err);
 /* A zeroed grid of another shape with g's kind, units, periodic flag,
  * metadata and history (no mask). */
 rc_grid *rc_grid_new_like(const rc_grid *g, size_t nx, size_t ny, double lx,

@@ -8,6 +8,7 @@
  * cycles. */
 #include "io.h"
 #include "io_internal.h"
+#include "fft.h"
 #include "units.h"
 
 #include <ctype.h>
@@ -158,21 +159,20 @@ rc__io_grid_alloc(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 {
 	rc_grid *g;
 	double *z;
+	void *block;
 
 	if (rc_grid_check_shape(nx, ny, lx, ly, err) != 0)
 		return NULL;
-	if ((z = fftw_alloc_real(nx * ny)) == NULL) {
-		rc_seterr(err, "out of memory (asked for %zu bytes for a %zux%zu grid)",
-		    nx * ny * sizeof(double), nx, ny);
+	if ((z = rc_grid_values(nx * ny, &block, err)) == NULL)
 		return NULL;
-	}
 	/* A 1x1 grid carries the defaults; its value array is replaced. */
 	if ((g = rc_grid_new(1, 1, lx, ly, err)) == NULL) {
-		fftw_free(z);
+		rc_fft_huge_free(z, block);
 		return NULL;
 	}
-	fftw_free(g->z);
+	rc_fft_huge_free(g->z, g->z_block);
 	g->z = z;
+	g->z_block = block;
 	g->nx = nx;
 	g->ny = ny;
 	return g;

@@ -5,11 +5,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <stdint.h>
 #include <sys/stat.h>
 
 #include "atomic.h"
 #include "fft.h"
 #include "grid.h"
+#include "io.h"
 #include "spectral.h"
 #include "table_write.h"
 #include "testlib.h"
@@ -225,11 +227,58 @@ test_spectral(void)
 	rc_grid_free(g);
 }
 
+/* A grid's values of 2 MB and more start on a 2 MB boundary (huge pages,
+ * rc_grid_values), made or read; smaller ones and adopted ones are
+ * fftw_malloc's, and each is freed as it was allocated (ASan). */
+static void
+test_grid_huge(void)
+{
+	const size_t huge = (size_t)2 << 20;
+	rc_grid *g = rc_grid_new(512, 512, 1, 1, NULL), *small, *r, *a;
+	rc_read_opts o;
+	rc_err err;
+	char path[512];
+	double *z = fftw_alloc_real(512 * 512), sum = 0;
+	int zero = 1;
+
+	for (size_t k = 0; k < 512 * 512; k++)
+		zero &= g->z[k] == 0;
+	test_true(zero, "grid_new 512^2: zeroed");
+	test_int((long long)((uintptr_t)g->z % huge), 0,
+	    "grid_new 512^2: values on a 2 MB boundary");
+	test_true(g->z_block != NULL && (char *)g->z_block <= (char *)g->z,
+	    "grid_new 512^2: the block it frees holds the values");
+	for (size_t k = 0; k < 512 * 512; k++)
+		g->z[k] = sin(0.01 * (double)k);
+	snprintf(path, sizeof(path), "%s/huge.surf", test_tmpdir());
+	test_int(rc_grid_write(g, path, RC_FMT_SURF, &err), 0, "512^2 written");
+	rc_read_opts_init(&o);
+	r = rc_grid_read(path, &o, &err);
+	test_true(r != NULL && (uintptr_t)r->z % huge == 0,
+	    "a 512^2 grid read: values on a 2 MB boundary");
+	test_true(r != NULL && memcmp(r->z, g->z, 512 * 512 * sizeof(double)) == 0,
+	    "a 512^2 grid read: the values written");
+	small = rc_grid_new(64, 64, 1, 1, NULL);
+	test_true(small->z_block == (void *)small->z,
+	    "grid_new 64^2: fftw_malloc's values, as they are");
+	for (size_t k = 0; k < 512 * 512; k++)
+		sum += z[k] = 1;
+	a = rc_grid_adopt(512, 512, 1, 1, z, &err);
+	test_true(a != NULL && a->z == z && a->z_block == NULL && sum == 512 * 512,
+	    "grid_adopt: the caller's values, freed with fftw_free");
+	rc_grid_free(a);
+	rc_grid_free(small);
+	rc_grid_free(r);
+	rc_grid_free(g);
+	remove(path);
+}
+
 int
 main(void)
 {
 	test_spectral();
 	test_grid();
+	test_grid_huge();
 	test_format();
 	test_wavenumbers();
 	test_fft();
