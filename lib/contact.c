@@ -86,7 +86,8 @@ highest_bit(uint64_t v)
  * is) a = 1 - m is exact, and a^3 >= 2^-150, s m >= 1e-216, 1e-14 a^3
  * are normal: the computed lhs = a^3 (1 + t1), |t1| <= 2.3e-16, rhs = s m
  * (1 + t2), |t2| <= 1.2e-16, and a difference or product rounds once
- * more (1.2e-16).
+ * more (1.2e-16; doubles rounded one operation at a time: no x87, no
+ * fused multiply-add, -ffp-contract=off).
  * (i) If lhs - rhs > 2e-14 lhs (computed) at lo, then g(lo) < 1 - 1.9e-14;
  * at a midpoint m <= lo, g(m) <= g(lo) and lhs - rhs >= a^3 (1 - g(m) -
  * 3.5e-16) (1 - 1.2e-16) > 1.8e-14 a^3, above the computed 1e-14 lhs <
