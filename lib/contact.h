@@ -100,7 +100,10 @@ int rc_contact_analyse(const rc_grid *h, const unsigned char *contact,
  * bond has s = c x, t = c (d - x), c = |n . e| the cosine between the
  * edge normal and the bond, so
  *   3 E* g_j / (4 sigma_i d c) = (1 - f)^(3/2) / f^(1/2),  f = x / d,
- * monotonic in f in (0, 1), solved by bisection.  The normal is that of
+ * monotonic in f in (0, 1), solved by a 50-step bisection (to 2^-50),
+ * whose first steps (44 or 45 typically) are read off the root of the cubic
+ * (1 - f)^3 = r^2 f in closed form and certified by two tests, so that f
+ * is the plain bisection's bit for bit (contact.c).  The normal is that of
  * the gap's gradient at j (central differences, wrap-around); c is
  * floored at 0.1 (a bond along the edge carries no information on where
  * it crosses).  The edge then lies (f - 1/2) d beyond the bond's
