@@ -329,6 +329,22 @@ test_huge(void)
 	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
 	    ((size_t)2 << 20) == 0, "rc_fft_huge: aligned inside its block");
 	fftw_free(block);
+	/* From 1 MB (a rest of half a huge page and more goes on one) */
+	b = rc_fft_huge(RC_FFT_HUGE_MIN + 5, &block);
+	memset(b, 1, RC_FFT_HUGE_MIN + 5);
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: 1 MB + 5 aligned inside its "
+	    "block");
+	fftw_free(block);
+	b = rc_fft_huge(((size_t)2 << 20) + RC_FFT_HUGE_MIN, &block);
+	memset(b, 1, ((size_t)2 << 20) + RC_FFT_HUGE_MIN);
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: 3 MB aligned inside its block");
+	fftw_free(block);
+	b = rc_fft_huge(RC_FFT_HUGE_MIN - 1, &block);
+	test_true(b != NULL && (void *)b == block, "rc_fft_huge: below 1 MB "
+	    "fftw_malloc's, as it is");
+	fftw_free(block);
 	{
 		/* INT32_MAX^2 doubles: 2^65 bytes, past size_t */
 		rc_err err;
