@@ -286,20 +286,31 @@ void *
 rc_fft_huge(size_t n, void **block)
 {
 	const size_t page = (size_t)2 << 20;
+	size_t len = n;
 	uintptr_t at;
 
-	if (n < page || n > SIZE_MAX - page)
+	if (n < RC_FFT_HUGE_MIN || n > SIZE_MAX - 2 * page)
 		return *block = fftw_malloc(n);
-	if ((*block = fftw_malloc(n + page)) == NULL)
+	/* A rest of half a huge page or more goes on one: its 256 and more
+	 * small pages cost more in faults (3.3 ms at 1 MB) than the huge
+	 * page's unused part costs in memory (at most 1 MB). */
+	if (n % page >= RC_FFT_HUGE_MIN)
+		len = n / page * page + page;
+	if ((*block = fftw_malloc(len + page)) == NULL)
 		return NULL;
 	at = ((uintptr_t)*block + page - 1) & ~(uintptr_t)(page - 1);
 #ifdef MADV_HUGEPAGE
-	/* Advice, failure changes nothing.  The part past the last whole
-	 * 2 MB stays on small pages (glibc's hugetlb tunable advises whole
-	 * mappings): a huge page there would hold up to 2 MB unused. */
-	uintptr_t whole = at + n / page * page;
-	uintptr_t end = ((uintptr_t)*block + n + page) & ~(uintptr_t)4095;
+	/* Advice, failure changes nothing.  A shorter rest past the last
+	 * whole 2 MB stays on small pages (glibc's hugetlb tunable advises
+	 * whole mappings): a huge page there would hold over 1 MB unused. */
+	uintptr_t whole = at + len / page * page;
+	uintptr_t end = ((uintptr_t)*block + len + page) & ~(uintptr_t)4095;
 
+	/* Small pages already there (heap memory malloc reused: its
+	 * contents are not the caller's yet) would keep the range on small
+	 * pages: gfmd-solve's 1 MB stiffness table at 512^2 took 257 faults
+	 * instead of 1 in about half its runs without this. */
+	(void)madvise((void *)at, whole - at, MADV_DONTNEED);
 	(void)madvise((void *)at, whole - at, MADV_HUGEPAGE);
 	if (end > whole)
 		(void)madvise((void *)whole, end - whole, MADV_NOHUGEPAGE);

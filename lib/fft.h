@@ -96,11 +96,15 @@ typedef struct rc_fft {
  * number in effect. */
 int rc_fft_set_threads(int n);
 /* n bytes for a large array, as fftw_malloc gives them (NULL when out of
- * memory), but from 2 MB up starting on a 2 MB boundary, its whole 2 MB
- * pieces advised to the kernel as transparent huge pages (MADV_HUGEPAGE):
- * one page fault per 2 MB instead of per 4 kB, a first touch of 0.5 ms
- * per MB less on this project's virtual machine (13 us a 4 kB fault).
- * *block is what to give fftw_free. */
+ * memory), but from RC_FFT_HUGE_MIN (1 MB, half a huge page) up starting
+ * on a 2 MB boundary, its whole 2 MB pieces, and a rest of 1 MB or more,
+ * advised to the kernel as transparent huge pages (MADV_HUGEPAGE): one
+ * page fault per 2 MB instead of per 4 kB, a first touch of 0.5 ms per
+ * MB less on this project's virtual machine (13 us a 4 kB fault; 0.15 ms
+ * a huge page, but about 5.5 ms when the hypervisor has taken the guest's
+ * free memory back, free page reporting: measured there).  *block is
+ * what to give fftw_free. */
+#define RC_FFT_HUGE_MIN ((size_t)1 << 20)
 void *rc_fft_huge(size_t n, void **block);
 /* Frees what rc_fft_huge gave (x, block), or x from fftw_malloc when
  * block is NULL (a zeroed struct's field filled elsewhere). */

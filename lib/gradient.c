@@ -16,6 +16,13 @@ part_start(long p, size_t n)
 	return (size_t)p * n / NPART;
 }
 
+/* Columns a block at a time: the factor of each column (for the
+ * Laplacian its qx^2) made once for all rows, not once a point (two
+ * calls and two divisions a point were 8M of the 27M instructions of
+ * one spectral derivative at 512^2, callgrind).  Each factor is the same
+ * expression as a point's was, so the values are the same bit for bit. */
+#define DERIV_COLS 1024
+
 void
 rc_deriv_spectral(fftw_complex *out, const fftw_complex *in,
     enum rc_deriv which, size_t nx, size_t ny, double lx, double ly,
@@ -24,32 +31,58 @@ rc_deriv_spectral(fftw_complex *out, const fftw_complex *in,
 	size_t nxc = nx / 2 + 1;
 	double n = (double)(nx * ny);
 	long nrows = (long)rows;
+	double complex col[DERIV_COLS];
+	double qx2[DERIV_COLS];
 
-	#pragma omp parallel for schedule(static)
-	for (long jl = 0; jl < nrows; jl++) {
-		size_t j = (size_t)jl;
-		double qy = rc_wavenumber(j0 + j, ny, ly);
-		double dqy = rc_deriv_wavenumber(j0 + j, ny, ly);
+	for (size_t i0 = 0; i0 < nxc; i0 += DERIV_COLS) {
+		size_t ncol = nxc - i0 < DERIV_COLS ? nxc - i0 : DERIV_COLS;
 
-		for (size_t i = 0; i < nxc; i++) {
-			double qx = rc_wavenumber(i, nx, lx);
+		for (size_t c = 0; c < ncol; c++) {
+			double qx = rc_wavenumber(i0 + c, nx, lx);
 			double complex factor;
 
+			qx2[c] = qx * qx;
 			switch (which) {
 			case RC_DERIV_X:
-				factor = I * rc_deriv_wavenumber(i, nx, lx);
+				factor = I * rc_deriv_wavenumber(i0 + c, nx, lx);
 				break;
 			case RC_DERIV_Y:
-				factor = I * dqy;
+			case RC_DERIV_LAPLACIAN:	/* per row, below */
+				factor = 0;
 				break;
-			case RC_DERIV_LAPLACIAN:
-				factor = -(qx * qx + qy * qy);
-				break;
-			default:
+			default:	/* RC_DERIV_XX */
 				factor = -qx * qx;
 				break;
 			}
-			out[j * nxc + i] = in[j * nxc + i] * (factor / n);
+			col[c] = factor / n;
+		}
+		#pragma omp parallel for schedule(static)
+		for (long jl = 0; jl < nrows; jl++) {
+			size_t j = (size_t)jl;
+			double qy = rc_wavenumber(j0 + j, ny, ly);
+			double complex fy = I * rc_deriv_wavenumber(j0 + j, ny, ly);
+			double complex row = fy / n;
+			const fftw_complex *a = in + j * nxc + i0;
+			fftw_complex *b = out + j * nxc + i0;
+
+			switch (which) {
+			case RC_DERIV_Y:
+				for (size_t c = 0; c < ncol; c++)
+					b[c] = a[c] * row;
+				break;
+			case RC_DERIV_LAPLACIAN:
+				for (size_t c = 0; c < ncol; c++) {
+					double complex factor =
+					    -(qx2[c] + qy * qy);
+
+					b[c] = a[c] * (factor / n);
+				}
+				break;
+			default:	/* the columns' factors */
+				for (size_t c = 0; c < ncol; c++)
+					b[c] = a[c] * col[c];
+				break;
+			}
 		}
 	}
 }

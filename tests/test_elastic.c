@@ -342,7 +342,8 @@ pixel_vs_love(size_t nx, size_t ny)
 
 /* The continuum table equals E* |q| / 2 at every entry, bit for bit: the
  * rows above ny/2, copied from their mirror images (elastic.c), included;
- * even and odd row counts, a rectangular cell. */
+ * even and odd row counts, a rectangular cell, one and two rows, and
+ * 512x511 on two threads (the rows split between them). */
 static void
 table_exact(size_t nx, size_t ny, double lx, double ly)
 {
@@ -377,6 +378,10 @@ main(void)
 {
 	table_exact(16, 12, 1.0, 0.7);
 	table_exact(9, 7, 1.3, 2.1);
+	table_exact(8, 1, 1.0, 1.0);
+	table_exact(6, 2, 1.0, 0.5);
+	rc_fft_set_threads(2);
+	table_exact(512, 511, 1.0, 1.0);
 	single_modes(32, 24, 2.0, 1.5, 3.0);
 	single_modes(15, 9, 1.0, 2.5, 0.7);	/* odd: no Nyquist mode */
 	single_modes(16, 1, 4.0, 1.0, 1.0);	/* line contact: qy = 0 */

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "fft.h"
+#include "gradient.h"
 #include "grid.h"
 #include "spectral.h"
 #include "testlib.h"
@@ -250,10 +251,14 @@ test_blocked(void)
 static void
 test_gbar_bits(void)
 {
-	static const double scales[] = { 1, 1e150, 1e-150, 1e300, 1e-300 };
+	static const double scales[] = { 1, 1e150, 1e-150, 1e300, 1e-300,
+	    INFINITY, NAN };
 	static const size_t sizes[][2] = { { 24, 16 }, { 17, 9 } };
 	unsigned long seed = 12345;
 
+	/* The last two put one inf or NaN height among heights near 1: a
+	 * NaN as before (max_num's NaN case cannot reach the result: a NaN
+	 * modulus makes the sum NaN). */
 	for (size_t s = 0; s < 2; s++)
 		for (size_t c = 0; c < sizeof(scales) / sizeof(scales[0]); c++) {
 			size_t nx = sizes[s][0], ny = sizes[s][1];
@@ -264,8 +269,11 @@ test_gbar_bits(void)
 
 			for (size_t k = 0; k < nx * ny; k++) {
 				seed = seed * 6364136223846793005UL + 1442695040888963407UL;
-				g->z[k] = scales[c] * ((double)(seed >> 11) / 9007199254740992.0 - 0.5);
+				g->z[k] = (isfinite(scales[c]) ? scales[c] : 1) *
+				    ((double)(seed >> 11) / 9007199254740992.0 - 0.5);
 			}
+			if (!isfinite(scales[c]))
+				g->z[5] = scales[c];
 			rc_rms_gradient(g, NULL, &got, NULL);
 			rc_fft_init(&f, nx, ny, RC_FFT_ESTIMATE, NULL);
 			memcpy(f.real, g->z, nx * ny * sizeof(double));
@@ -287,7 +295,8 @@ test_gbar_bits(void)
 			for (int p = 0; p < 64; p++)
 				want += partial[p];
 			want = ldexp(sqrt(want), e) / (double)(nx * ny);
-			test_true(memcmp(&got, &want, sizeof(got)) == 0, "rms gradient "
+			test_true(memcmp(&got, &want, sizeof(got)) == 0 ||
+			    (isnan(got) && isnan(want)), "rms gradient "
 			    "%zux%zu, heights ~%g: %.17g, full scan %.17g", nx, ny,
 			    scales[c], got, want);
 			rc_fft_free(&f);
@@ -295,9 +304,84 @@ test_gbar_bits(void)
 		}
 }
 
+/* rc_deriv_spectral makes each column's factor once for all rows: the
+ * same bits as the factor made at every point (below, the loop it
+ * replaced), for the four derivatives, on an even and an odd grid and on
+ * one of 2050 columns (1026 half-complex ones: past a block of 1024),
+ * in place and into another buffer, on a band of rows (j0 > 0, as an MPI
+ * rank's), with an inf and a NaN among the values (the complex product's
+ * special cases). */
+static void
+test_deriv_bits(void)
+{
+	static const size_t sizes[][2] = { { 24, 16 }, { 17, 9 }, { 2050, 5 } };
+	unsigned long seed = 777;
+
+	for (size_t s = 0; s < 3; s++)
+		for (int d = RC_DERIV_X; d <= RC_DERIV_XX; d++) {
+			size_t nx = sizes[s][0], ny = sizes[s][1], nxc = nx / 2 + 1;
+			size_t j0 = 1, rows = ny - 2, m = rows * nxc;
+			double lx = 1.3, ly = 0.7, n = (double)(nx * ny);
+			double complex *in = malloc(m * sizeof(*in));
+			double complex *got = malloc(m * sizeof(*got));
+			double complex *want = malloc(m * sizeof(*want));
+
+			for (size_t k = 0; k < m; k++) {
+				double re, im;
+
+				seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+				re = (double)(seed >> 11) / 9007199254740992.0 - 0.5;
+				seed = seed * 6364136223846793005UL + 1442695040888963407UL;
+				im = (double)(seed >> 11) / 9007199254740992.0 - 0.5;
+				in[k] = CMPLX(re, im);
+			}
+			in[3] = CMPLX(INFINITY, 0.25);
+			in[m - 2] = CMPLX(0.5, NAN);
+			for (size_t j = 0; j < rows; j++) {
+				double qy = rc_wavenumber(j0 + j, ny, ly);
+				double dqy = rc_deriv_wavenumber(j0 + j, ny, ly);
+
+				for (size_t i = 0; i < nxc; i++) {
+					double qx = rc_wavenumber(i, nx, lx);
+					double complex factor;
+
+					switch (d) {
+					case RC_DERIV_X:
+						factor = I * rc_deriv_wavenumber(i, nx, lx);
+						break;
+					case RC_DERIV_Y:
+						factor = I * dqy;
+						break;
+					case RC_DERIV_LAPLACIAN:
+						factor = -(qx * qx + qy * qy);
+						break;
+					default:
+						factor = -qx * qx;
+						break;
+					}
+					want[j * nxc + i] = in[j * nxc + i] * (factor / n);
+				}
+			}
+			rc_deriv_spectral(got, in, (enum rc_deriv)d, nx, ny, lx, ly,
+			    j0, rows);
+			test_true(memcmp(got, want, m * sizeof(*got)) == 0,
+			    "rc_deriv_spectral %d, %zux%zu rows %zu-%zu: the same "
+			    "bits as a factor made at every point", d, nx, ny, j0,
+			    j0 + rows - 1);
+			rc_deriv_spectral(in, in, (enum rc_deriv)d, nx, ny, lx, ly,
+			    j0, rows);
+			test_true(memcmp(in, want, m * sizeof(*in)) == 0,
+			    "rc_deriv_spectral %d, %zux%zu, in place: the same bits",
+			    d, nx, ny);
+			free(in);
+			free(got);
+			free(want);
+		}
+}
+
 /* rc_fft_init's buffers of 2 MB and more start on a 2 MB boundary (huge
  * pages, rc_fft_huge), and the transforms on them give the same bits as
- * FFTW's on buffers of fftw_malloc; below 2 MB they are fftw_malloc's. */
+ * FFTW's on buffers of fftw_malloc; below 1 MB they are fftw_malloc's. */
 static void
 test_huge(void)
 {
@@ -329,6 +413,22 @@ test_huge(void)
 	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
 	    ((size_t)2 << 20) == 0, "rc_fft_huge: aligned inside its block");
 	fftw_free(block);
+	/* From 1 MB (a rest of half a huge page and more goes on one) */
+	b = rc_fft_huge(RC_FFT_HUGE_MIN + 5, &block);
+	memset(b, 1, RC_FFT_HUGE_MIN + 5);
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: 1 MB + 5 aligned inside its "
+	    "block");
+	fftw_free(block);
+	b = rc_fft_huge(((size_t)2 << 20) + RC_FFT_HUGE_MIN, &block);
+	memset(b, 1, ((size_t)2 << 20) + RC_FFT_HUGE_MIN);
+	test_true(b != NULL && (char *)block <= b && (uintptr_t)b %
+	    ((size_t)2 << 20) == 0, "rc_fft_huge: 3 MB aligned inside its block");
+	fftw_free(block);
+	b = rc_fft_huge(RC_FFT_HUGE_MIN - 1, &block);
+	test_true(b != NULL && (void *)b == block, "rc_fft_huge: below 1 MB "
+	    "fftw_malloc's, as it is");
+	fftw_free(block);
 	{
 		/* INT32_MAX^2 doubles: 2^65 bytes, past size_t */
 		rc_err err;
@@ -357,6 +457,7 @@ int
 main(void)
 {
 	test_gbar_bits();
+	test_deriv_bits();
 	test_huge();
 	test_threads();
 	test_policy();

@@ -209,6 +209,10 @@ check_rel "surfstat --by-height at 1e150: gxx = 1e300 times" "$(col bigh.tsv gxx
 # gfmd-solve names the surface, not "p = inf".
 check_status "gfmd-solve on heights near 1e150: refused" 1 gfmd-solve -q -p 0.05 big.surf
 check "... naming the surface and its scale" grep -q "^gfmd-solve: big.surf: heights spanning .* outside \[1e-100, 1e+100\]" "$T_TMP/stderr"
+# The span it names is max - min of the heights (its loop compares, no
+# fmin/fmax): surfstat's range, to the 6 digits of %g.
+span=$(sed -n 's/^gfmd-solve: big.surf: heights spanning \([^ ]*\) .*/\1/p' "$T_TMP/stderr")
+check_rel "... the span is surfstat's range" "$span" "$(col big.tsv range)" 1e-5
 # One contact point at a harmonic apex: gbar_c = 0, kappa_c nan, said why.
 surfgen --type harmonic -n 64 -o hh.surf
 check_status "gfmd-solve: a one-point contact" 0 gfmd-solve -q -p 1e-6 -o one-point.tsv hh.surf
