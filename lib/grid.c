@@ -79,11 +79,11 @@ rc_grid_new(size_t nx, size_t ny, double lx, double ly, rc_err *err)
 	return g;
 }
 
-/* From 2 MB up on transparent huge pages (rc_fft_huge): a grid's first
- * touch, by reading or by the memset above, faults once per 2 MB instead
- * of 512 times (at 512^2 reading a grid took 9.5 ms of wall, 6 of them
- * 530 faults and 2.5 the first look at the values the kernel copied in;
- * 0.3 ms on huge pages: clock_gettime, quiet machine). */
+/* From RC_FFT_HUGE_MIN up on transparent huge pages (rc_fft_huge): the
+ * values' first touch, by reading or by the memset above, faults once per
+ * 2 MB instead of once per 4 kB (reading a 512^2 grid took 9.5 ms of wall,
+ * 6 of them 530 faults and 2.5 the first look at what the kernel copied
+ * in; 1.4 ms on a huge page: clock_gettime, quiet machine). */
 double *
 rc_grid_values(size_t n, void **block, rc_err *err)
 {

@@ -92,9 +92,10 @@ void rc_grid_free(rc_grid *g);
 rc_grid *rc_grid_adopt(size_t nx, size_t ny, double lx, double ly, double *z,
     rc_err *err);
 /* Room for n grid values as rc_grid_new gives them (not zeroed): FFTW's
- * alignment, from 2 MB up on transparent huge pages (fft.h, rc_fft_huge);
- * *block is what rc_fft_huge_free takes with the values, and what a grid
- * holding them keeps in z_block.  NULL and err set when out of memory. */
+ * alignment, from RC_FFT_HUGE_MIN (fft.h) up on transparent huge pages
+ * (rc_fft_huge); *block is what rc_fft_huge_free takes with the values,
+ * and what a grid holding them keeps in z_block.  NULL and err set when
+ * out of memory. */
 double *rc_grid_values(size_t n, void **block, rc_err *err);
 /* A zeroed grid of another shape with g's kind, units, periodic flag,
  * metadata and history (no mask). */
