@@ -162,5 +162,26 @@ else
 		printf '%s\n' "$up" | while read -r c; do echo "UPWARD: $c"; done
 		fail "calls up or across the solver's layers: $(printf '%s\n' "$up" | grep -c .)"
 	fi
+	# make fuzz links each harness from the sources the Makefile lists,
+	# not the archive: every library symbol their objects use must be
+	# defined by one of them (io_dl.c and fft.c were missing: undefined
+	# rc__dl_xml, rc_fft_huge ...).
+	for v in FUZZ_READ_SRC FUZZ_ROWS_SRC; do
+		srcs=$(printf 'rc-print-src:\n\t@echo $(%s)\n' "$v" |
+		    make -s --no-print-directory -C "$RC_TOP" -f Makefile -f - rc-print-src)
+		missing=$(symbols "$objdir" | awk -v list="$srcs" '
+		BEGIN { n = split(list, s, " "); for (k = 1; k <= n; k++) {
+			f = s[k]; sub(/.*\//, "", f); sub(/\.c$/, ".o", f); in_list[f] = 1 } }
+		$1 == "D" { def[$3] = $2; next }
+		($2 in in_list) { use[$3] = $2 }
+		END { for (y in use) if ((y in def) && !(def[y] in in_list))
+			print use[y] " uses " y " of " def[y] }' | sort)
+		if [ -n "$srcs" ] && [ -z "$missing" ]; then
+			pass "make fuzz: $v defines every library symbol its files use"
+		else
+			printf '%s\n' "$missing" | head -n 5 | sed 's/^/MISSING: /'
+			fail "make fuzz: $v lacks $(printf '%s\n' "$missing" | grep -c .) symbols"
+		fi
+	done
 fi
 summary
