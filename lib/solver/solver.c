@@ -220,7 +220,7 @@ rc_solver_free(rc_solver *s)
 	if (s == NULL)
 		return;
 	if (s->u != s->el.fft.real)
-		fftw_free(s->u);
+		rc_fft_huge_free(s->u, s->u_block);
 	rc_elastic_free(&s->el);
 	rc_halfspace_release(&s->fel);
 	rc__adh_free_release(s);
@@ -228,7 +228,7 @@ rc_solver_free(rc_solver *s)
 	rc_fft_huge_free(s->height, s->height_block);
 	rc_fft_huge_free(s->sigma, s->sigma_block);
 	free(s->contact);
-	fftw_free(s->fire_vel);
+	rc_fft_huge_free(s->fire_vel, s->vel_block);
 	fftw_free(s->cg_dir);
 	free(s);
 }

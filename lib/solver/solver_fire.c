@@ -39,7 +39,9 @@
  * the blocked path (solver_fire_loop.c).  The mark spares the wall the
  * reads of u and h (16 bytes a point); the update and the mixing run two
  * points at a time without branches (rc__v2d, solver_impl.h), the same
- * operations in the same order, so the same bits.  Measured (perf
+ * operations in the same order, so the same bits; the update first runs
+ * on the CPU's widest vectors, 4 or 8 points (solver_fire_wide.c), and
+ * leaves the two-point loop the rest of its range.  Measured (perf
  * samples, 512^2, 10 pressures, one thread, 3 runs each): the wall 20 to
  * 27% faster, the update 15 to 22%, the mixing 10 to 15%; together 0.96
  * FFT pairs an iteration before, 0.78 now.  Not kept: the wall without
@@ -74,23 +76,27 @@
  * the force pass need not read u and h; the force pass leaves the
  * contact set C (0 or 1) for the mixing and update passes and for every
  * reader after the solve. */
-#define ON_WALL		2
+#define ON_WALL		RC__ON_WALL
 
 int
 rc__fire_alloc(rc_solver *s, rc_err *err)
 {
-	s->u = fftw_alloc_real(s->n);
-	s->fire_vel = fftw_alloc_real(s->n);
+	/* on huge pages from 1 MB (fft.h): at 1024^2 the two took 4096 page
+	 * faults, 53 ms, in a solve's first pass */
+	s->u = rc_fft_huge(s->n * sizeof(double), &s->u_block);
+	s->fire_vel = rc_fft_huge(s->n * sizeof(double), &s->vel_block);
 	if (s->u == NULL || s->fire_vel == NULL)
 		return rc_seterr(err, "out of memory (asked for %zu bytes of FIRE buffers)",
 		    2 * s->n * sizeof(double));
 	return 0;
 }
 
-/* The wall's state in the loop: the solver and the load. */
+/* The wall's state in the loop: the solver, the load, and the vector
+ * lanes of the update's wide loop (solver_fire_wide.c). */
 struct wall {
 	rc_solver *s;
 	double p;
+	int lanes;
 };
 
 /* The force pass on the points k0 <= k < k1 of f, which holds K u: f_eff
@@ -165,7 +171,8 @@ static void
 update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
     size_t k1, double *sum, double *least)
 {
-	rc_solver *s = ((struct wall *)ctx)->s;
+	const struct wall *w = ctx;
+	rc_solver *s = w->s;
 	unsigned char *contact = s->contact;
 	const double *h = s->height;
 	double *u = s->u, *v = s->fire_vel;
@@ -175,7 +182,7 @@ update_range(void *ctx, double *a, const rc__fire_step *st, size_t k0,
 
 	(void)sum;
 	(void)least;
-	k = k0;
+	k = rc__wall_update_lanes(w->lanes, contact, h, u, v, a, st, k0, k1);
 #ifdef RC__V2
 	for (; k + 2 <= k1; k += 2) {
 		rc__v2d ak, vk, uk, hk;
@@ -268,7 +275,7 @@ fire_start(rc_solver *s)
 int
 rc__fire_solve(rc_solver *s, double p, rc_solve_result *res, rc_err *err)
 {
-	struct wall w = { s, p };
+	struct wall w = { s, p, rc__lanes_best() };
 	/* with the sigma grid as the force where the operator's buffer
 	 * cannot hold it (the blocked path, no mass table) */
 	rc__fire_parts pt = { .el = &s->el, .n = s->n, .points = POINTS(s),

@@ -58,7 +58,10 @@
  * read and what made them 0.96 before), the two scalings 0.15 before
  * rc_fft_multiply's loops were vectorised (0.12 measured with them); the
  * solve's seconds 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating
- * runs each).  make bench's iter_in_pairs on this VM moves by up to 0.5
+ * runs each).  The update on 8 lanes (solver_fire_wide.c) then made
+ * make bench's iter_in_pairs at 512^2 2.83 (2.83, 2.84; on 2 lanes 2.95,
+ * 2.94, alternating runs, 9 rounds each, on a quiet VM); at 1024^2 no
+ * gain was measured (2.62 to 2.67 against 2.66 to 2.70).  make bench's iter_in_pairs on this VM moves by up to 0.5
  * between runs, more than these gains: doc/performance.md gives a run's
  * median with its spread.  The passes are the interaction's functions over
  * ranges of points, called once per range (never per point).  On the
@@ -108,13 +111,17 @@
  * short, the operator distributed, or k_0 > 0 (the operator's own mean
  * stiffness is then the mean mode's mass) or another mode has k_q = 0. */
 static double *
-mass_table(rc_elastic *e, double inv_n)
+mass_table(rc_elastic *e, double inv_n, void **block)
 {
 	size_t nm = e->nxc * e->ny, m, bad = 0;
 	const double *k = e->stiffness;
 	double *q;
 
-	if (e->dist != NULL || (q = fftw_alloc_real(nm)) == NULL)
+	*block = NULL;
+	/* on huge pages from 1 MB (fft.h): at 1024^2 its 1026 page faults
+	 * took 13 ms of each solve */
+	if (e->dist != NULL ||
+	    (q = rc_fft_huge(nm * sizeof(double), block)) == NULL)
 		return NULL;
 #pragma omp parallel for reduction(+:bad) schedule(static)
 	for (m = 0; m < nm; m++) {
@@ -122,7 +129,8 @@ mass_table(rc_elastic *e, double inv_n)
 		bad += m > 0 && !(k[m] > 0);
 	}
 	if (bad > 0 || k[0] > 0) {
-		fftw_free(q);
+		rc_fft_huge_free(q, *block);
+		*block = NULL;
 		return NULL;
 	}
 	return q;
@@ -136,6 +144,7 @@ struct fire_op {
 	int blocked;		/* the fused passes on the blocked transforms */
 	double inv_n;
 	double *table;		/* mass_table, or NULL */
+	void *table_block;	/* the block it sits in (rc_fft_huge) */
 	double *f;		/* the force: K u, then f_eff */
 	rc_fft_multiplier stiff, mass;
 };
@@ -396,7 +405,9 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 	/* never a distributed operator (no blocked transforms there) */
 	op.blocked = pt->fuse && rc_fft_conv_blocked(f);
 	op.inv_n = 1.0 / (double)e->n;
-	op.table = pt->accelerate != NULL ? NULL : mass_table(e, op.inv_n);
+	op.table_block = NULL;
+	op.table = pt->accelerate != NULL ? NULL : mass_table(e, op.inv_n,
+	    &op.table_block);
 	/* plain, with the table: K u, f_eff and a one grid, the operator's
 	 * real buffer (a separate force would be a fourth grid through the
 	 * cache each iteration); blocked: the force in pt->f, a in the
@@ -462,7 +473,7 @@ rc__fire_run(const rc__fire_parts *pt, const rc_solver_opts *opts,
 			pt->updated(pt->ctx, sum);
 		}
 	}
-	fftw_free(op.table);
+	rc_fft_huge_free(op.table, op.table_block);
 	*iterations = it;
 	return status;
 }

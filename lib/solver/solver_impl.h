@@ -101,9 +101,11 @@ struct rc_solver {
 	double p_adh, a_attr;
 	rc_adh_pad pad;		/* adhesion on free boundaries */
 	rc__watch watch;	/* the current solve's stall watch */
-	/* The blocks rc_fft_huge placed height, sigma and scratch in (what
-	 * fftw_free takes); NULL: the arrays themselves (solver.c). */
+	/* The blocks rc_fft_huge placed height, sigma, scratch and FIRE's u
+	 * and fire_vel in (what fftw_free takes); NULL: the arrays
+	 * themselves (solver.c). */
 	void *height_block, *sigma_block, *scratch_block;
+	void *u_block, *vel_block;
 };
 
 /* The number of points of the whole grid: s->n, or the global count of a
@@ -329,6 +331,20 @@ typedef struct rc__fire_report {
 } rc__fire_report;
 typedef void rc__fire_pass(void *ctx, double *x, const rc__fire_step *st,
     size_t k0, size_t k1, double *sum, double *least);
+/* The hard wall's mark (solver_fire.c): contact[k] between the update
+ * pass and the next force pass, the point is on the wall (u == h). */
+#define RC__ON_WALL	2
+/* The wall's update loop on vectors of `lanes' doubles
+ * (solver_fire_wide.c): RC__LANES_BASE (none: returns k0),
+ * RC__LANES_AVX2 (4), RC__LANES_AVX512 (8); rc__lanes_best, the widest
+ * this CPU runs.  It does the whole vectors from k0 on, the same
+ * operations point for point as update_range's loops, and returns the
+ * first point it left to them. */
+enum { RC__LANES_BASE = 0, RC__LANES_AVX2 = 4, RC__LANES_AVX512 = 8 };
+int rc__lanes_best(void);
+size_t rc__wall_update_lanes(int lanes, unsigned char *contact,
+    const double *h, double *u, double *v, const double *a,
+    const rc__fire_step *st, size_t k0, size_t k1);
 typedef struct rc__fire_parts {
 	rc_elastic *el;		/* the operator */
 	size_t n;		/* its points (this process's) */
