@@ -102,7 +102,7 @@ struct rc_solver {
 	rc_adh_pad pad;		/* adhesion on free boundaries */
 	rc__watch watch;	/* the current solve's stall watch */
 	/* The blocks rc_fft_huge placed height, sigma, scratch and FIRE's u
-	 * and fire_vel in (what fftw_free takes); NULL: the arrays
+	 * and fire_vel in (what rc_fft_huge_free takes); NULL: the arrays
 	 * themselves (solver.c). */
 	void *height_block, *sigma_block, *scratch_block;
 	void *u_block, *vel_block;
