@@ -16,6 +16,10 @@ fail() { T_FAIL=$((T_FAIL + 1)); echo "FAIL: $1"; return 0; }
 # skip N REASON: N checks that cannot run here, counted and said why
 skip() { T_SKIP=$((T_SKIP + $1)); echo "SKIP: $1 check(s): $2"; return 0; }
 
+# have_pty: script(1) is installed and can make a pseudo-terminal (a
+# chroot or container without /dev/pts has none)
+have_pty() { script -qec true /dev/null >/dev/null 2>&1; }
+
 # check DESC CMD...: passes if the command succeeds
 check() { d=$1; shift; if "$@"; then pass "$d"; else fail "$d"; fi; }
 

@@ -21,12 +21,12 @@ check_status "contact-stats --gnuplot - with the table on stdout" 2 contact-stat
 surfgen -n 16 --png - -o t.surf > p.png
 check "surfgen --png - alone writes a PNG" [ "$(head -c 4 p.png | od -An -c | tr -d ' ')" = "211PNG" ]
 # Binary to a terminal is refused (script(1) gives the tool a terminal).
-if command -v script >/dev/null 2>&1; then
+if have_pty; then
 	script -qec "surfgen -n 8 --png - -o u.surf" /dev/null > tty.out 2>&1
 	check "surfgen --png - to a terminal is refused" grep -q "terminal; refusing" tty.out
 	check "nothing written when refused" [ ! -e u.surf ]
 else
-	skip 2 "script(1) not installed: binary output to a terminal not tested (apt-get install bsdutils)"
+	skip 2 "script(1) not installed or no pseudo-terminal here (/dev/pts): binary output to a terminal not tested (apt-get install bsdutils)"
 fi
 
 # --- outputs against inputs ------------------------------------------------

@@ -19,7 +19,7 @@ contact-stats --no-extrapolate -o cs.tsv rows.tsv
 contact-stats --no-extrapolate rows.tsv | cat > cs-pipe.tsv
 check "contact-stats piped: the TSV of -o" cmp -s cs.tsv cs-pipe.tsv
 
-if command -v script >/dev/null 2>&1; then
+if have_pty; then
 	# On a terminal: the pretty view (35 columns: transposed, one line
 	# per column), hrms rounded to 4 significant digits.
 	script -qc "surfstat s.surf" /dev/null | tr -d '\r' > st-tty.txt
@@ -33,7 +33,7 @@ if command -v script >/dev/null 2>&1; then
 	    [ "$(awk '{ print length($0) }' st-tty.txt | sort -u | wc -l)" -eq 1 ]
 	check "integers whole (nx 32)" grep -Eq '^nx +32$' st-tty.txt
 else
-	echo "SKIP: script(1) not installed, no pty test (apt-get install bsdutils)"
+	skip 5 "script(1) not installed or no pseudo-terminal here (/dev/pts): no pty test (apt-get install bsdutils)"
 fi
 
 # --pretty into a pipe, wide enough for columns: every numeric column's
@@ -66,5 +66,4 @@ check "--pretty narrower than two rows: one row per block" \
 # --json wins over --pretty; JSON is never made pretty.
 surfstat --pretty --json s.surf > st.json
 check "--pretty --json: JSON" grep -q '^\[' st.json
-echo "$T_PASS passed, $T_FAIL failed"
-[ "$T_FAIL" -eq 0 ]
+summary
