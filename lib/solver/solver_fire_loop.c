@@ -60,12 +60,13 @@
  * solve's seconds 2.47 to 2.61 against 2.68 to 2.78 before (8 alternating
  * runs each).  The update on 8 lanes (solver_fire_wide.c) then made
  * make bench's iter_in_pairs at 512^2 2.83 (2.83, 2.84; on 2 lanes 2.95,
- * 2.94, alternating runs, 9 rounds each, on a quiet VM); at 1024^2 no
- * gain was measured (2.62 to 2.67 against 2.66 to 2.70).  make bench's iter_in_pairs on this VM moves by up to 0.5
- * between runs, more than these gains: doc/performance.md gives a run's
- * median with its spread.  The passes are the interaction's functions over
- * ranges of points, called once per range (never per point).  On the
- * plain path a range is a chunk of parts->grain points or, with grain 0,
+ * 2.94, alternating runs, 9 rounds each, a quiet Xeon VM); at 1024^2 no
+ * gain was measured (2.62 to 2.67 against 2.66 to 2.70: its loads of h
+ * and u wait on memory).  make bench's iter_in_pairs on this VM moves by
+ * up to 0.5 between runs, more than these gains: doc/performance.md
+ * gives a run's median with its spread.  The passes are the
+ * interaction's functions over ranges of points, called once per range
+ * (never per point).  On the plain path a range is a chunk of parts->grain points or, with grain 0,
  * each thread's share of the grid (the order in which each interaction
  * summed before the loop was shared; a sum's rounding depends on it).
  * From RC_FFT_BLOCKED_POINTS on the transforms are blocked (fft.h: rows,
