@@ -66,9 +66,10 @@
  * up to 0.5 between runs, more than these gains: doc/performance.md
  * gives a run's median with its spread.  The passes are the
  * interaction's functions over ranges of points, called once per range
- * (never per point).  On the plain path a range is a chunk of parts->grain points or, with grain 0,
- * each thread's share of the grid (the order in which each interaction
- * summed before the loop was shared; a sum's rounding depends on it).
+ * (never per point).  On the plain path a range is a chunk of
+ * parts->grain points or, with grain 0, each thread's share of the grid
+ * (the order in which each interaction summed before the loop was
+ * shared; a sum's rounding depends on it).
  * From RC_FFT_BLOCKED_POINTS on the transforms are blocked (fft.h: rows,
  * then columns in blocks with the scaling while they are in cache, then
  * rows) and, for an interaction that allows it (parts->fuse), the passes
