@@ -160,6 +160,11 @@ int rc__gwy_read(const unsigned char *buf, size_t len, rc_chanset *s,
     rc_err *err);
 int rc__x3p_read(const unsigned char *buf, size_t len, rc_chanset *s,
     rc_err *err);
+/* 0 if the HDF5 file image buf names no other file (external links,
+ * external storage, virtual data sets); lib: libnetcdf's dlopen handle.
+ * io_h5check.c. */
+int rc__h5_self_contained(void *lib, const unsigned char *buf, size_t len,
+    rc_err *err);
 /* netCDF: o gives the cell size when the file has none. */
 int rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
     rc_chanset *s, rc_err *err);

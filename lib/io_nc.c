@@ -447,6 +447,11 @@ rc__nc_read(const unsigned char *buf, size_t len, const rc_read_opts *o,
 		    "numbers");
 	if (ncapi_open(api, err) != 0)
 		return -1;
+	/* netCDF-4 is HDF5, whose links and storage can name other files */
+	if (!classic && rc__h5_self_contained(api->handle, buf, len, err) != 0) {
+		ncapi_close(api);
+		return -1;
+	}
 	if ((st = api->open_mem("input.nc", NC_NOWRITE, len, (void *)buf, &nc)) !=
 	    NC_NOERR) {
 		rc_seterr(err, "not a readable netCDF file: %s", api->strerror(st));

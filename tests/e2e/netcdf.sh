@@ -206,4 +206,28 @@ check "data sets: units = um listed" [ "$(surfstat --channels du.h5 | awk -F'\t'
 surfstat -q du.h5 > du.tsv
 check "data sets: the channel in a length unit is the default" [ "$(col_of du.tsv nx) $(col_of du.tsv ny)" = "4 2" ]
 check_rel "data sets: its hrms" "$(col_of du.tsv hrms)" "$(col_of d2.tsv hrms)" 0
+# HDF5 files that name other files (tests/h5links.c, compiled here
+# against libhdf5, which libnetcdf-dev brings): an external link (by a
+# relative or absolute name, or deep in a group), external raw storage
+# and a virtual data set are refused by name before libnetcdf follows
+# them, and no value of the other file (100..105, 200..205) is output;
+# a soft link inside the file is allowed.
+if ${CC:-cc} $(pkg-config --cflags hdf5 2>/dev/null) -o h5links \
+    "$RC_TOP/tests/h5links.c" $(pkg-config --libs hdf5 2>/dev/null) \
+    2>h5links.err && ./h5links "$T_TMP"; then
+	for c in "extlink:an external link" "extabs:an external link" \
+	    "extgroup:an external link" "extstore:stored in external files" \
+	    "vds:a virtual data set"; do
+		f=${c%%:*}
+		check_status "HDF5 $f.h5: refused" 1 surfwarp -q --z-unit nm "$f.h5" -o "$f.txt"
+		check "HDF5 $f.h5: the refusal says why" grep -q "refused: /.* is .*${c#*:}" "$T_TMP/stderr"
+		check "HDF5 $f.h5: nothing written" [ ! -e "$f.txt" ]
+	done
+	check_status "HDF5 extgroup.h5: --channels refuses too" 1 surfstat --channels extgroup.h5
+	check "HDF5: the link's path is named" grep -q "/g/deep is an external link" "$T_TMP/stderr"
+	check_status "HDF5 softlink.h5: a soft link inside the file is read" 0 surfwarp -q --z-unit nm softlink.h5 -o soft.txt
+	check "HDF5 softlink.h5: its own values, heights(x, y)" [ "$(values soft.txt)" = "1 4 2 5 3 6" ]
+else
+	skip 18 "cannot compile tests/h5links.c against libhdf5 (libhdf5-dev): $(head -1 h5links.err)"
+fi
 summary
