@@ -211,6 +211,32 @@ temp_beside_script(const char *script, rc_err *err)
 	return name;
 }
 
+/* 1 if the file at path is a whole PNG: the signature first and the
+ * IEND chunk (length 0, type, CRC) last.  gnuplot exits 0 when its
+ * writes fail (a full disk left 0 bytes or a truncated image), so its
+ * status alone does not tell whether the picture was written. */
+static int
+png_complete(const char *path)
+{
+	static const unsigned char sig[8] = { 0x89, 'P', 'N', 'G', '\r',
+		'\n', 0x1a, '\n' };
+	static const unsigned char iend[12] = { 0, 0, 0, 0, 'I', 'E', 'N',
+		'D', 0xae, 0x42, 0x60, 0x82 };
+	unsigned char head[8], tail[12];
+	FILE *in = fopen(path, "rb");
+	int ok;
+
+	if (in == NULL)
+		return 0;
+	ok = fread(head, 1, sizeof(head), in) == sizeof(head) &&
+	    memcmp(head, sig, sizeof(sig)) == 0 &&
+	    fseek(in, -(long)sizeof(tail), SEEK_END) == 0 &&
+	    fread(tail, 1, sizeof(tail), in) == sizeof(tail) &&
+	    memcmp(tail, iend, sizeof(iend)) == 0;
+	fclose(in);
+	return ok;
+}
+
 /* Append the file at path to out; an errno value or 0. */
 static int
 copy_file(const char *path, FILE *out)
@@ -288,7 +314,7 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 	FILE *fp = NULL;
 	char *png_tmp = NULL;
 	pid_t pid = -1;
-	int fd, st = 0, rc;
+	int fd, st = 0, rc, gnuplot_ok, whole = 1;
 
 	snprintf(script, sizeof(script), "%s/contact-stats.gp.XXXXXX",
 	    dir && *dir ? dir : "/tmp");
@@ -340,7 +366,10 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 		return rc_seterr(err, "gnuplot not found; use --gnuplot FILE to get "
 		    "the script");
 	}
-	if (rc == 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0 && png_tmp != NULL)
+	gnuplot_ok = rc == 0 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
+	if (gnuplot_ok && !png_complete(png_tmp != NULL ? png_tmp : out.tmp))
+		whole = 0;
+	else if (gnuplot_ok && png_tmp != NULL)
 		rc = copy_file(png_tmp, out.fp);
 	if (png_tmp != NULL) {
 		drop(png_tmp);
@@ -352,6 +381,11 @@ rc_cstats_png_write(const rc_cstats *res, const char *path, rc_err *err)
 			return rc_seterr(err, "running gnuplot: %s", strerror(rc));
 		return rc_seterr(err, "%s: gnuplot failed (exit status %d)", path,
 		    WIFEXITED(st) ? WEXITSTATUS(st) : -1);
+	}
+	if (!whole) {
+		rc_atomic_abort(&out);
+		return rc_seterr(err, "%s: gnuplot exited 0 but wrote no whole "
+		    "PNG (a full disk?); nothing written", path);
 	}
 	return rc_atomic_commit(&out, err);
 }

@@ -262,6 +262,33 @@ PATH="$T_TMP/fakebin" "$RC_BIN/contact-stats" --png png/k.png -o /dev/null a.tsv
 check "--png with a failing gnuplot: exit 1" test "$st" = 1
 check "--png with a failing gnuplot: said so" grep -q "gnuplot failed (exit status 3)" err.txt
 check "a failed --png leaves nothing beside the target" test "$(ls -A png)" = t.tsv
+# A gnuplot that exits 0 but wrote no whole PNG (what a full disk did:
+# the old picture replaced by 0 bytes, exit 0): refused, the old file
+# kept.  The fake writes the signature and half an IHDR, or, to show the
+# check takes a whole file, the signature and the IEND chunk.
+mkdir -p halfbin wholebin
+cat >halfbin/gnuplot <<'SH'
+#!/bin/sh
+out=$(sed -n "s/^set output '\(.*\)'.*/\1/p" "$1")
+printf '\211PNG\r\n\032\n\0\0\0\rIHDR' >"$out"
+SH
+cat >wholebin/gnuplot <<'SH'
+#!/bin/sh
+out=$(sed -n "s/^set output '\(.*\)'.*/\1/p" "$1")
+printf '\211PNG\r\n\032\n\0\0\0\0IEND\256B`\202' >"$out"
+SH
+chmod +x halfbin/gnuplot wholebin/gnuplot
+echo old >png/old.png
+PATH="$T_TMP/halfbin:$PATH" "$RC_BIN/contact-stats" --png png/old.png -o /dev/null a.tsv 2>err.txt; st=$?
+check "--png, gnuplot exits 0 with half a PNG: exit 1" test "$st" = 1
+check "--png, half a PNG: said so" grep -q "png/old.png: gnuplot exited 0 but wrote no whole PNG" err.txt
+check "--png, half a PNG: the old file kept" test "$(cat png/old.png)" = old
+check "--png, half a PNG: nothing left beside it" test "$(ls -A png | tr '\n' ' ')" = "old.png t.tsv "
+PATH="$T_TMP/halfbin:$PATH" "$RC_BIN/contact-stats" --png - -o /dev/null a.tsv >png/half.out 2>err.txt; st=$?
+check "--png - with half a PNG: exit 1, nothing on stdout" test "$st:$(wc -c <png/half.out)" = "1:0"
+PATH="$T_TMP/wholebin:$PATH" "$RC_BIN/contact-stats" --png png/old.png -o /dev/null a.tsv 2>err.txt; st=$?
+check "--png, a whole (if tiny) PNG: exit 0, written" test "$st:$(wc -c <png/old.png)" = "0:20"
+rm -f png/old.png png/half.out
 # Issue 27: --per-seed compared every output group with every other
 # (twice: the curve order and the labels), 9,000 rows 19.7 s, 18,000
 # rows 79.7 s; n log n now (bench/bench_cstats_perseed.sh, these rows:
