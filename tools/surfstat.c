@@ -678,9 +678,10 @@ gnuplot_script(const struct tool *t, const char *path, const rc_grid *g,
 	    png, g->unit[0] ? g->unit : "length", g->unit[0] ? g->unit : "length",
 	    g->nx, g->ny, g->lx, g->ly, g->unit[0] ? g->unit : "(no unit)");
 	free(png);
-	if (ferror(a.fp) || rc_atomic_commit(&a, &err) != 0) {
+	/* commit reports a write error too (and has closed a.fp either way) */
+	if (rc_atomic_commit(&a, &err) != 0) {
 		rc_atomic_abort(&a);
-		tool_fail_at(t, path, ferror(a.fp) ? "write error" : err.msg);
+		tool_fail_at(t, path, err.msg);
 	}
 }
 

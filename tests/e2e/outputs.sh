@@ -95,6 +95,7 @@ full_fails "surfgen --png FULL" surfgen -n 8 --png "$FULLDEV" -o "$NULLDEV"
 full_fails "surfwarp -o FULL" surfwarp -w 1 -o "$FULLDEV" h.surf
 full_fails "surfstat -o FULL" surfstat -o "$FULLDEV" h.surf
 full_fails "surfstat --psd2d FULL" surfstat --psd2d "$FULLDEV" -o "$NULLDEV" h.surf
+full_fails "surfstat --gnuplot FULL (it crashed)" surfstat --gnuplot "$FULLDEV" -o "$NULLDEV" h.surf
 full_fails "gfmd-solve -o FULL" gfmd-solve -q -p 0.1 -o "$FULLDEV" h.surf
 full_fails "gfmd-solve --gap FULL" gfmd-solve -q -p 0.1 --gap "$FULLDEV" -o "$NULLDEV" h.surf
 full_fails "gfmd-solve --png FULL" gfmd-solve -q -p 0.1 --png "$FULLDEV" -o "$NULLDEV" h.surf
