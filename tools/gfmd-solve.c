@@ -236,7 +236,8 @@ usage(void)
 "  --png FILE           contact map over the height map\n"
 "  --checkpoint FILE    on SIGINT/SIGTERM, after each finished pressure and\n"
 "                       every --checkpoint-every minutes, save the state to\n"
-"                       FILE (.surf); removed when the run completes\n"
+"                       FILE (.surf, a new file or the --resume one);\n"
+"                       removed when the run completes\n"
 "  --checkpoint-every MIN  also save it every MIN minutes (at least 0.005)\n"
 "                       during a solve\n"
 "  --resume FILE        continue the run saved in FILE (same indenter; the\n"
@@ -357,9 +358,11 @@ same_file(const struct file_id *a, const struct file_id *b)
 }
 
 /* --checkpoint FILE replaces FILE as the run goes and removes it at the
- * end: an existing regular file there must be a checkpoint (or the one
- * --resume reads), else it is the user's and the run is refused before
- * any work (exit 2).  A device or FIFO is written, never removed. */
+ * end: an existing regular file there may only be the checkpoint that
+ * --resume reads.  Anything else is the user's (another file, or the
+ * saved state of an unfinished run, which a new run would have replaced
+ * and then removed), and the run is refused before any work (exit 2).
+ * A device or FIFO is written, never removed. */
 static void
 checkpoint_target_check(struct run *r)
 {
@@ -379,13 +382,17 @@ checkpoint_target_check(struct run *r)
 		return;
 	}
 	if (rc_checkpoint_read(&probe, &u, o->ck_path, &err) == 0) {
+		tool_bad(&r->t, "--checkpoint %s: the file holds the saved state "
+		    "of an unfinished run (%zu of %zu pressures done), which this "
+		    "run would replace and remove: continue it with --resume %s, "
+		    "or remove it, or name a new file", o->ck_path, probe.next,
+		    probe.npressures, o->ck_path);
 		rc_checkpoint_free(&probe);
 		rc_grid_free(u);
-		return;
-	}
-	tool_bad(&r->t, "--checkpoint %s: the file exists and is not a "
-	    "gfmd-solve checkpoint (%s); a checkpoint replaces it and is removed "
-	    "at the end: name a new file", o->ck_path, err.msg);
+	} else
+		tool_bad(&r->t, "--checkpoint %s: the file exists and is not a "
+		    "gfmd-solve checkpoint (%s); a checkpoint replaces it and is "
+		    "removed at the end: name a new file", o->ck_path, err.msg);
 	tool_usage_check(&r->t);
 }
 

@@ -135,6 +135,16 @@ i=0
 while [ ! -f ck3.surf ] && [ $i -lt 300 ] && kill -0 $pid 2>/dev/null; do sleep 0.05; i=$((i + 1)); done
 kill -INT $pid 2>/dev/null; wait $pid
 if [ -f ck3.surf ]; then
+	# An unfinished run's checkpoint at --checkpoint of a new run (not
+	# --resume): it was replaced, then removed at the end; refused now.
+	cp ck3.surf ck3.keep
+	check_status "--checkpoint on an unfinished run's checkpoint: exit 2" 2 \
+	    gfmd-solve -q -p 0.05 --checkpoint ck3.surf -o other.tsv s256.surf
+	check "  says how to continue it" grep -q \
+	    'ck3.surf: the file holds the saved state of an unfinished run (.*continue it with --resume ck3.surf' \
+	    "$T_TMP/stderr"
+	check "  the checkpoint is kept" cmp -s ck3.surf ck3.keep
+	check "  no rows written" test ! -e other.tsv
 	gfmd-solve -q --tol 1e-8 --resume ck3.surf s256.surf > /dev/null 2>err
 	check_rel "resume with another --tol: exit 1" $? 1 0
 	check "resume with another --tol: named" grep -q 'checkpoint has --tol' err
