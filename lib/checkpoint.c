@@ -23,7 +23,7 @@
  * 3: the scene (boundary, kernel, effects); 4: the adhesive law;
  * 5: checkpoint.sum over the whole state (an edited row or displacement is
  * refused).  Versions 2 to 4 are still read, without the sum. */
-#define VERSION 5
+#define VERSION 6
 #define FNV_OFFSET 14695981039346656037ULL
 #define FNV_PRIME 1099511628211ULL
 
@@ -123,6 +123,7 @@ rc_checkpoint_init(rc_checkpoint *c, const rc_grid *g, const double *p,
 		return -1;
 	memcpy(c->pressures, p, np * sizeof(double));
 	c->npressures = np;
+	c->stall = RC_STALL_WINDOW;
 	c->boundary = RC_BOUNDARY_PERIODIC;
 	c->kernel = RC_KERNEL_CONTINUUM;
 	c->substrate = RC_SUBSTRATE_NONE;
@@ -366,6 +367,7 @@ rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
 	    setd(g, "checkpoint.alpha", c->alpha, err) ||
 	    rc_grid_meta_setf(g, "checkpoint.fd", err, "%d", c->fd != 0) ||
 	    rc_grid_meta_setf(g, "checkpoint.max_iter", err, "%ld", c->max_iter) ||
+	    rc_grid_meta_setf(g, "checkpoint.stall", err, "%ld", c->stall) ||
 	    rc_grid_meta_set(g, "checkpoint.boundary",
 	    rc_boundary_name((enum rc_boundary)c->boundary), err) ||
 	    rc_grid_meta_set(g, "checkpoint.kernel",
@@ -383,6 +385,8 @@ rc_checkpoint_write(const rc_checkpoint *c, const double *u, const char *path,
 	    c->reduced ? "reduced" : "absolute", err) ||
 	    rc_grid_meta_set(g, "checkpoint.pressures", s, err) ||
 	    rc_grid_meta_setf(g, "checkpoint.next", err, "%zu", c->next) ||
+	    rc_grid_meta_setf(g, "checkpoint.unconverged", err, "%zu",
+	    c->unconverged) ||
 	    rc_grid_meta_set(g, "checkpoint.state",
 	    c->solving ? "solving" : "between", err) ||
 	    rc_grid_meta_setf(g, "checkpoint.iterations", err, "%ld",
@@ -637,7 +641,10 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 	    need_long(g, "checkpoint.fd", 0, 1, &v, err))
 		goto bad;
 	c->fd = v != 0;
+	c->stall = -1;
 	if (need_long(g, "checkpoint.max_iter", 1, LONG_MAX, &c->max_iter, err) ||
+	    (version >= 6 && need_long(g, "checkpoint.stall", 0, LONG_MAX,
+	    &c->stall, err)) ||
 	    (s = need(g, "checkpoint.pressure_kind", err)) == NULL)
 		goto bad;
 	if (strcmp(s, "reduced") != 0 && strcmp(s, "absolute") != 0) {
@@ -656,6 +663,17 @@ rc_checkpoint_read(rc_checkpoint *c, rc_grid **up, const char *path,
 		goto bad;
 	}
 	c->next = (size_t)v;
+	c->unconverged = 0;
+	if (version >= 6) {
+		if (need_long(g, "checkpoint.unconverged", 0, LONG_MAX, &v, err))
+			goto bad;
+		if ((size_t)v > c->next) {
+			rc_seterr(err, "meta.checkpoint.unconverged = %ld: more "
+			    "than the %zu finished rows", v, c->next);
+			goto bad;
+		}
+		c->unconverged = (size_t)v;
+	}
 	if ((s = need(g, "checkpoint.state", err)) == NULL)
 		goto bad;
 	if (strcmp(s, "solving") != 0 && strcmp(s, "between") != 0) {
@@ -848,6 +866,9 @@ rc_checkpoint_match(const rc_checkpoint *s, const rc_checkpoint *n,
 	if (s->max_iter != n->max_iter)
 		return rc_seterr(err, "checkpoint has --max-iter %ld, this run %ld",
 		    s->max_iter, n->max_iter);
+	if (s->stall >= 0 && s->stall != n->stall)
+		return rc_seterr(err, "checkpoint has --stall %ld, this run %ld",
+		    s->stall, n->stall);
 	if (s->boundary >= 0 && s->boundary != n->boundary)
 		return rc_seterr(err, "checkpoint has --boundary %s, this run %s",
 		    rc_boundary_name((enum rc_boundary)s->boundary),

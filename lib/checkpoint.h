@@ -6,11 +6,14 @@
  * A checkpoint is a native .surf grid (surf(5)) of the elastic surface
  * height u of the solve in progress (or of the last finished one), whose
  * metadata, all under "checkpoint.", say what it belongs to:
- *   version        5
+ *   version        6
  *   input_sum      FNV-1a 64-bit hash of the indenter (nx, ny, lx, ly, the
  *                  bit patterns of its heights, its metadata, units,
  *                  periodic flag and missing-point mask), 16 hex digits
  *   method, tol, E, alpha, fd, max_iter   the options that decide the rows
+ *   stall          --stall (0: never), which decides them too; since
+ *                  version 6 (older checkpoints: unrecorded, any --stall
+ *                  resumes them)
  *   boundary, kernel, hardness, thickness, substrate, poisson, adhesion,
  *   range          the scene (--boundary, --kernel, the optional effects;
  *                  0 or none where not asked for); since version 3 (a
@@ -24,6 +27,9 @@
  *   pressures      the full list, comma-separated, exact to the last bit
  *                  (positive; any finite value with adhesion)
  *   next           index (0-based) of the first pressure without a row
+ *   unconverged    how many of the finished rows did not converge (the
+ *                  resumed run's exit status counts them); since version
+ *                  6 (older checkpoints: 0)
  *   state          solving (u is a partial solve of pressures[next]) or
  *                  between (u is the solution of pressures[next - 1])
  *   iterations     iterations already spent on pressures[next]
@@ -56,6 +62,7 @@ typedef struct rc_checkpoint {
 	char method[16];
 	double tol, modulus, alpha;
 	long max_iter;
+	long stall;		/* --stall; -1: unrecorded (version < 6) */
 	int fd;
 	/* the scene: enum rc_boundary (-1: unrecorded, version 2), enum
 	 * rc_kernel, enum rc_substrate; 0 where an effect is off */
@@ -67,6 +74,7 @@ typedef struct rc_checkpoint {
 	size_t npressures;
 	/* progress */
 	size_t next;
+	size_t unconverged;	/* finished rows that did not converge */
 	int solving;		/* 1: u is a partial solve of pressures[next] */
 	long iterations;
 	/* finished rows, serialised (row.K values) */
@@ -88,7 +96,7 @@ uint64_t rc_checkpoint_hash(const rc_grid *indenter);
 uint64_t rc_checkpoint_sum(const rc_grid *checkpoint);
 
 /* Fill identity from the indenter and copy the pressure list; rows empty;
- * the scene the half space, periodic, no effect. */
+ * the scene the half space, periodic, no effect; --stall the default. */
 int rc_checkpoint_init(rc_checkpoint *c, const rc_grid *indenter,
     const double *pressures, size_t npressures, rc_err *err);
 void rc_checkpoint_free(rc_checkpoint *c);

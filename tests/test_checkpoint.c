@@ -48,11 +48,13 @@ fill(rc_checkpoint *c, const rc_grid *g)
 	c->modulus = 2.0 / 3;
 	c->alpha = 0.3;
 	c->max_iter = 12345;
+	c->stall = 77;
 	c->fd = 1;
 	c->reduced = 1;
 	c->next = 2;
 	c->solving = 1;
 	c->iterations = 777;
+	c->unconverged = 1;
 	/* a scene with every key away from its default (the format does not
 	 * ask whether gfmd-solve would combine them) */
 	c->boundary = RC_BOUNDARY_FREE;
@@ -119,6 +121,9 @@ round_trip(void)
 	test_true(back.next == 2 && back.solving == 1 && back.iterations == 777 &&
 	    back.max_iter == 12345 && back.fd == 1 && back.reduced == 1 &&
 	    strcmp(back.method, "fire") == 0, "progress and options back");
+	test_int(back.stall, 77, "--stall back (version 6)");
+	test_int((long long)back.unconverged, 1, "the unconverged rows' count "
+	    "back (version 6)");
 	test_true(back.boundary == RC_BOUNDARY_FREE &&
 	    back.kernel == RC_KERNEL_PIXEL && back.substrate == RC_SUBSTRATE_SLIP &&
 	    memcmp(&back.hardness, &c.hardness, sizeof(double)) == 0 &&
@@ -208,6 +213,14 @@ identity(void)
 	test_int(rc_checkpoint_match(&c, &d, &err), -1,
 	    "absolute vs reduced: refused");
 	d.reduced = 1;
+	d.stall = c.stall + 1;
+	test_int(rc_checkpoint_match(&c, &d, &err), -1, "other --stall: refused");
+	test_true(strstr(err.msg, "--stall 77, this run 78") != NULL,
+	    "message: %s", err.msg);
+	c.stall = -1;	/* a version 5 checkpoint: any --stall */
+	test_int(rc_checkpoint_match(&c, &d, &err), 0, "--stall unrecorded: "
+	    "accepted");
+	c.stall = d.stall = 77;
 	d.nx = NX + 1;
 	test_int(rc_checkpoint_match(&c, &d, &err), -1, "other grid: refused");
 	d.nx = NX;
@@ -343,6 +356,35 @@ edited(void)
 	    "  naming the row ('%s')", err.msg);
 }
 
+/* A version 5 checkpoint (before --stall and the unconverged rows were
+ * recorded): read, the stall unrecorded (-1, any --stall resumes it) and
+ * no unconverged row; the keys of version 6 are ignored in it. */
+static void
+version5(void)
+{
+	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_checkpoint c;
+	rc_err err;
+
+	if (g == NULL) {
+		test_true(0, "re-read a.ck");
+		return;
+	}
+	rc_grid_meta_set(g, "checkpoint.version", "5", &err);
+	rc_grid_meta_unset(g, "checkpoint.stall");
+	rc_grid_meta_unset(g, "checkpoint.unconverged");
+	reseal(g, 1);
+	rc_grid_write(g, test_slot_path(1, "v5.ck"), RC_FMT_SURF, &err);
+	rc_grid_free(g);
+	test_int(rc_checkpoint_read(&c, &u, test_slot_path(1, "v5.ck"), &err), 0,
+	    "version 5: read (%s)", err.msg);
+	test_true(c.stall == -1 && c.unconverged == 0, "version 5: --stall "
+	    "unrecorded (%ld), no unconverged row (%zu)", c.stall,
+	    c.unconverged);
+	rc_checkpoint_free(&c);
+	rc_grid_free(u);
+}
+
 /* A version 3 checkpoint (before the adhesive law was recorded): read,
  * with the exponential law, the only one then. */
 static void
@@ -427,7 +469,12 @@ bad_files(void)
 
 	/* Range checks: each field just outside what gfmd-solve accepts. */
 	refused("checkpoint.version", "1", "version");
-	refused("checkpoint.version", "6", "version");
+	refused("checkpoint.version", "7", "version");
+	refused("checkpoint.stall", "-1", "checkpoint.stall");
+	refused("checkpoint.stall", NULL, "checkpoint.stall");
+	/* two rows finished (next = 2): at most two unconverged */
+	refused("checkpoint.unconverged", "3", "more than the 2 finished rows");
+	refused("checkpoint.unconverged", NULL, "checkpoint.unconverged");
 	refused("checkpoint.law", "linear", "checkpoint.law");
 	refused("checkpoint.law", NULL, "checkpoint.law");
 	refused("checkpoint.boundary", "torus", "checkpoint.boundary");
@@ -463,6 +510,7 @@ bad_files(void)
 	refused("checkpoint.state", NULL, "not a gfmd-solve checkpoint");
 	version2();
 	version3();
+	version5();
 	edited();
 	/* with adhesion any finite pressure (gfmd-solve takes them then) */
 	g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, &err);

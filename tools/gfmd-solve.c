@@ -461,6 +461,8 @@ resume_defaults(struct run *r)
 		o->fd = saved->fd;
 	if (!o->given_max_iter)
 		o->so.max_iter = saved->max_iter;
+	if (!o->given_stall && saved->stall >= 0)
+		o->so.stall_window = saved->stall;
 	/* the scene; the boundary kind only where recorded (version 3) */
 	if (o->boundary < 0 && saved->boundary >= 0)
 		o->boundary = saved->boundary;
@@ -531,6 +533,7 @@ checkpoint_setup(struct run *r)
 	ck->alpha = o->alpha;
 	ck->fd = o->fd;
 	ck->max_iter = o->so.max_iter;
+	ck->stall = o->so.stall_window;
 	ck->boundary = (int)run_boundary(r);
 	ck->kernel = (int)o->so.kernel;
 	ck->hardness = o->so.hardness;
@@ -760,6 +763,10 @@ solver_setup(struct run *r)
 		rc_grid_free(r->saved_u);
 		r->saved_u = NULL;
 		r->first = r->saved.next;
+		/* the finished rows that did not converge count in the
+		 * exit status as they did in the interrupted run */
+		r->nunconverged = r->saved.unconverged;
+		r->ck.unconverged = r->saved.unconverged;
 		if (r->saved.solving)
 			r->resumed_iterations = r->saved.iterations;
 	}
@@ -907,6 +914,12 @@ solve_pressure(struct run *r, size_t k, double *p, double *p_star,
 	/* A periodic checkpoint stops the solve through o->so.stop; it is
 	 * saved and the same pressure goes on from where it stopped. */
 	for (;;) {
+		/* what is left of --max-iter after the pieces before (a
+		 * resumed count, a timer's stops): the row's iterations are
+		 * those of one uninterrupted solve */
+		if (rc_solver_set_max_iter(r->solver, iterations < o->so.max_iter ?
+		    o->so.max_iter - iterations : 1, &err) != 0)
+			tool_fail(&r->t, "%s", err.msg);
 		if (o->napproach) {
 			st = rc_solver_solve_approach(r->solver, o->approach[k], p,
 			    res, &err);
@@ -979,6 +992,8 @@ write_row(struct run *r, double p, double p_star, const rc_solve_result *res)
 		    .nx = h->nx, .ny = h->ny };
 		int w = gfmd_emit_row(&r->t, &in, res->converged, &r->row,
 		    &r->table, r->out.fp, &r->nunconverged, &err);
+
+		r->ck.unconverged = r->nunconverged;
 
 		if (w != 0) {
 			rc_atomic_abort(&r->out);

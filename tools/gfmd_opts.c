@@ -184,6 +184,7 @@ gfmd_option(struct tool *t, struct gfmd_opts *o, int c, const char *arg,
 			else
 				o->so.stall_window = n;
 		}
+		o->given_stall = 1;
 		break;
 	case OPT_ALPHA:
 		if (tool_double(t, "--alpha", arg, &o->alpha) == 0 &&

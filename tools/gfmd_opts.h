@@ -98,6 +98,7 @@ struct gfmd_opts {
 	int given_layer;		/* --thickness, --substrate or --poisson */
 	int poisson_given;
 	int given_max_iter;
+	int given_stall;
 	int given_kernel;
 	int given_adhesion;		/* --adhesion or --range */
 	int given_law;			/* --law */

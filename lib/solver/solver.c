@@ -234,6 +234,15 @@ rc_solver_free(rc_solver *s)
 }
 
 int
+rc_solver_set_max_iter(rc_solver *s, long max_iter, rc_err *err)
+{
+	if (max_iter < 1)
+		return rc_seterr(err, "max_iter must be at least 1");
+	s->opts.max_iter = max_iter;
+	return 0;
+}
+
+int
 rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err)
 {
 	size_t k;

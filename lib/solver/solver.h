@@ -133,6 +133,11 @@ void rc_solver_free(rc_solver *s);
 
 /* Warm start from an elastic surface height field u (nx*ny values). */
 int rc_solver_set_displacement(rc_solver *s, const double *u, rc_err *err);
+/* The iteration limit of the solves that follow (at least 1): what is
+ * left of opts.max_iter when a solve goes on in pieces (a checkpoint
+ * resumed or taken on a timer), so the pieces together stop where one
+ * solve would. */
+int rc_solver_set_max_iter(rc_solver *s, long max_iter, rc_err *err);
 
 /* Solve at mean (absolute) pressure p > 0 (free: over the given area, so
  * the load is p lx ly; with adhesion any finite p: res->separated).  Returns 0 if converged, 1 if

@@ -335,4 +335,30 @@ check "  the surface is kept" cmp -s keep.surf s32.surf
 gfmd-solve -q -p 0.05,0.1 --checkpoint new.surf -o p.tsv s32.surf
 check_rel "--checkpoint on a new name: exit 0" $? 0 0
 check "  its checkpoint removed at the end" test ! -e new.surf
+# --- What decides the rows and the exit status survives a resume
+# (version 6): --stall (a resumed run ran with the default 300, not the
+# saved 0) and the finished rows that did not converge (a resumed run
+# counted only its own).  Two pressures that cannot reach --tol 1e-15
+# (residual ~2e-14 at 128^2) within --max-iter 12000, no stall: the
+# first row is written unconverged, the signal lands in the second.
+surfgen -q -n 128 --seed 3 -o s128.surf
+rm -f uc.surf
+gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 12000 -p 0.05,0.1 \
+    --checkpoint uc.surf -o uc.tsv s128.surf 2>uc.err & pid=$!
+i=0
+while [ ! -f uc.surf ] && [ $i -lt 600 ] && kill -0 $pid 2>/dev/null; do sleep 0.05; i=$((i + 1)); done
+kill -INT $pid 2>/dev/null; wait $pid
+if [ -f uc.surf ] && head -c 4000 uc.surf | grep -aq '^meta.checkpoint.next = 1$'; then
+	check "the checkpoint records --stall 0" grep -aq '^meta.checkpoint.stall = 0$' uc.surf
+	check "  and one unconverged row" grep -aq '^meta.checkpoint.unconverged = 1$' uc.surf
+	gfmd-solve -q --stall 300 --resume uc.surf s128.surf > /dev/null 2>err
+	check_rel "resume with another --stall: exit 1" $? 1 0
+	check "  named ($(head -c 150 err))" grep -q 'checkpoint has --stall 0, this run 300' err
+	gfmd-solve -j 1 -q --resume uc.surf -o uc2.tsv s128.surf 2>err; st=$?
+	check_rel "resumed, both rows unconverged: exit 1" $st 1 0
+	check "  both counted ($(tail -n 1 err | head -c 150))" grep -q '2 of 2 pressures did not converge' err
+	check_rel "  the saved --stall 0 ran the second to --max-iter" "$(col uc2.tsv iterations 2)" 12000 0
+else
+	skip 7 "unconverged resume: the signal did not land in the second pressure"
+fi
 summary
