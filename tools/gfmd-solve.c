@@ -327,6 +327,8 @@ struct run {
 	struct file_id ck_found, ck_written;
 	rc_grid *saved_u;
 	rc_atomic out;
+	int out_existed;	/* -o named a file that was there before the run */
+	char rows_note[256];	/* what a stop did with the finished rows */
 	rc_table_out table;
 	rc_row row;
 	rc_contact_opts co;
@@ -788,6 +790,7 @@ output_begin(struct run *r)
 
 	if (rc_atomic_open(&r->out, r->t.out, &err) != 0)
 		tool_fail_at(&r->t, r->t.out, err.msg);
+	r->out_existed = r->out.tmp != NULL && access(r->out.path, F_OK) == 0;
 	tool_table_begin(&r->t, &r->table, r->out.fp);
 	rc_row_init(&r->row);
 	rc_contact_defaults(&r->co);
@@ -828,15 +831,35 @@ output_begin(struct run *r)
 }
 
 /* The rows of the pressures finished before a stop are complete: keep
- * them (none: nothing). */
+ * them in -o when it is a new file; a file that was there stays as it
+ * was (a stopped run does not replace it with part of a table; the
+ * checkpoint, if saved, has the rows and its resumed run writes them).
+ * r->rows_note says which, for the stop's message. */
 static void
-keep_finished_rows(struct run *r, size_t done)
+keep_finished_rows(struct run *r, size_t done, int in_checkpoint)
 {
+	const char *name = r->t.out ? r->t.out : "standard output";
 	rc_err err;
 
-	if (done == 0 || rc_table_end(&r->table, &err) != 0 ||
-	    rc_atomic_commit(&r->out, &err) != 0)
+	if (done > 0 && r->out_existed) {
 		rc_atomic_abort(&r->out);
+		snprintf(r->rows_note, sizeof(r->rows_note), "%s was there "
+		    "before and is kept as it was; the rows of the %zu of %zu "
+		    "pressures done are %s", name, done, r->npressures,
+		    in_checkpoint ? "in the checkpoint" : "not written");
+		return;
+	}
+	if (done == 0 || rc_table_end(&r->table, &err) != 0 ||
+	    rc_atomic_commit(&r->out, &err) != 0) {
+		rc_atomic_abort(&r->out);
+		snprintf(r->rows_note, sizeof(r->rows_note), done == 0 ?
+		    "no pressure was done, no row written" : "the rows of the "
+		    "%zu of %zu pressures done could not be written to %s: %s",
+		    done, r->npressures, name, err.msg);
+		return;
+	}
+	snprintf(r->rows_note, sizeof(r->rows_note), "the rows of the %zu of "
+	    "%zu pressures done are written", done, r->npressures);
 }
 
 /* A stop inside pressure k (a signal, or the --checkpoint-every timer):
@@ -859,13 +882,11 @@ stop_inside(struct run *r, size_t k, double p, long iterations)
 			file_id(o->ck_path, &r->ck_written);
 		else {
 			if (stop_signal) {
-				keep_finished_rows(r, k);
+				keep_finished_rows(r, k, 0);
 				tool_fail(&r->t, "interrupted by signal %d while "
 				    "solving p = %g; the checkpoint %s could not be "
-				    "written: %s; the rows of the %zu of %zu "
-				    "pressures done before it are written",
-				    (int)stop_signal, p, o->ck_path, err.msg, k,
-				    r->npressures);
+				    "written: %s; %s", (int)stop_signal, p,
+				    o->ck_path, err.msg, r->rows_note);
 			}
 			tool_warn(&r->t, "checkpoint %s: %s; going on", o->ck_path,
 			    err.msg);
@@ -875,18 +896,17 @@ stop_inside(struct run *r, size_t k, double p, long iterations)
 		char *cmd = o->ck_path ? resume_command(r->argc, r->argv,
 		    o->ck_path) : NULL;
 
-		keep_finished_rows(r, k);
+		keep_finished_rows(r, k, o->ck_path != NULL);
 		if (o->ck_path == NULL)
 			tool_fail(&r->t, "interrupted by signal %d while solving "
-			    "p = %g (iteration %ld); the rows of the %zu of %zu "
-			    "pressures done before it are written, no fields "
+			    "p = %g (iteration %ld); %s, no fields "
 			    "(--checkpoint FILE makes a run resumable)",
-			    (int)stop_signal, p, iterations, k, r->npressures);
+			    (int)stop_signal, p, iterations, r->rows_note);
 		tool_fail(&r->t, "interrupted by signal %d while solving p = %g "
-		    "(pressure %zu of %zu, iteration %ld); state saved in %s; "
-		    "resume with: %s%s", (int)stop_signal, p, k + 1,
-		    r->npressures, iterations, o->ck_path, cmd ? cmd : "",
-		    stdin_note);
+		    "(pressure %zu of %zu, iteration %ld); %s; state saved in "
+		    "%s; resume with: %s%s", (int)stop_signal, p, k + 1,
+		    r->npressures, iterations, r->rows_note, o->ck_path,
+		    cmd ? cmd : "", stdin_note);
 	}
 	stop_flag = 0;
 	if (stop_signal)
@@ -1025,22 +1045,22 @@ checkpoint_after(struct run *r, size_t k)
 		file_id(o->ck_path, &r->ck_written);
 	else {
 		if (stop_signal) {
-			keep_finished_rows(r, k + 1);
+			keep_finished_rows(r, k + 1, 0);
 			tool_fail(&r->t, "interrupted by signal %d after pressure "
 			    "%zu of %zu; the checkpoint %s could not be written: "
-			    "%s; the rows of the pressures done are written",
-			    (int)stop_signal, k + 1, r->npressures, o->ck_path,
-			    err.msg);
+			    "%s; %s", (int)stop_signal, k + 1, r->npressures,
+			    o->ck_path, err.msg, r->rows_note);
 		}
 		tool_warn(&r->t, "checkpoint %s: %s; going on", o->ck_path, err.msg);
 	}
 	if (stop_signal) {
 		char *cmd = resume_command(r->argc, r->argv, o->ck_path);
 
-		keep_finished_rows(r, k + 1);
+		keep_finished_rows(r, k + 1, 1);
 		tool_fail(&r->t, "interrupted by signal %d after pressure %zu "
-		    "of %zu; state saved in %s; resume with: %s%s",
-		    (int)stop_signal, k + 1, r->npressures, o->ck_path,
+		    "of %zu; %s; state saved in %s; resume with: %s%s",
+		    (int)stop_signal, k + 1, r->npressures, r->rows_note,
+		    o->ck_path,
 		    cmd ? cmd : "", r->input == NULL || rc_is_stdio(r->input) ?
 		    " (with the same indenter on standard input)" : "");
 	}

@@ -342,7 +342,10 @@ check "  its checkpoint removed at the end" test ! -e new.surf
 # (residual ~2e-14 at 128^2) within --max-iter 12000, no stall: the
 # first row is written unconverged, the signal lands in the second.
 surfgen -q -n 128 --seed 3 -o s128.surf
+# -o names a file that was there: the stopped run keeps it as it was
+# (it was replaced by the one finished row), the row is in the checkpoint.
 rm -f uc.surf
+echo old > uc.tsv
 gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 12000 -p 0.05,0.1 \
     --checkpoint uc.surf -o uc.tsv s128.surf 2>uc.err & pid=$!
 i=0
@@ -351,6 +354,8 @@ kill -INT $pid 2>/dev/null; wait $pid
 if [ -f uc.surf ] && head -c 4000 uc.surf | grep -aq '^meta.checkpoint.next = 1$'; then
 	check "the checkpoint records --stall 0" grep -aq '^meta.checkpoint.stall = 0$' uc.surf
 	check "  and one unconverged row" grep -aq '^meta.checkpoint.unconverged = 1$' uc.surf
+	check "the -o file that was there is kept" test "$(cat uc.tsv)" = old
+	check "  said so ($(head -c 300 uc.err))" grep -q 'uc.tsv was there before and is kept as it was; the rows of the 1 of 2 pressures done are in the checkpoint; state saved in uc.surf' uc.err
 	gfmd-solve -q --stall 300 --resume uc.surf s128.surf > /dev/null 2>err
 	check_rel "resume with another --stall: exit 1" $? 1 0
 	check "  named ($(head -c 150 err))" grep -q 'checkpoint has --stall 0, this run 300' err
@@ -359,6 +364,6 @@ if [ -f uc.surf ] && head -c 4000 uc.surf | grep -aq '^meta.checkpoint.next = 1$
 	check "  both counted ($(tail -n 1 err | head -c 150))" grep -q '2 of 2 pressures did not converge' err
 	check_rel "  the saved --stall 0 ran the second to --max-iter" "$(col uc2.tsv iterations 2)" 12000 0
 else
-	skip 7 "unconverged resume: the signal did not land in the second pressure"
+	skip 9 "unconverged resume: the signal did not land in the second pressure"
 fi
 summary
