@@ -351,6 +351,16 @@ tool_may_replace(struct tool *t, const char *out_opt, const char *in_opt)
 	t->nmay_replace++;
 }
 
+int
+tool_help_check(struct tool *t)
+{
+	if (t->nbad == 0)
+		return 1;
+	fprintf(stderr, "%s: %d usage problem%s; see '%s --help'\n", t->name,
+	    t->nbad, t->nbad == 1 ? "" : "s", t->name);
+	exit(2);
+}
+
 void
 tool_usage_check(struct tool *t)
 {

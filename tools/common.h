@@ -135,6 +135,11 @@ void tool_bad_option(struct tool *t, const char *optstring,
 /* After validation: check the declared files against each other (below);
  * if any problem was reported, hint at --help, exit 2. */
 void tool_usage_check(struct tool *t);
+/* After the options, when -h was among them: 1 to print the help (exit
+ * 0); with a bad option anywhere beside it, the problems are counted and
+ * the tool exits 2 as tool_usage_check does (a script that passes a
+ * wrong option learns so even with --help). */
+int tool_help_check(struct tool *t);
 
 /* The shared options: -o -j -q -L --json --png --version.  Returns 1 if
  * opt was one of them (handled), 0 otherwise. */

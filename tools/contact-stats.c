@@ -165,14 +165,14 @@ parse(int argc, char **argv, struct opts *o)
 		{ NULL, 0, NULL, 0 }
 	};
 	rc_cstats_opts *cs = &o->cs;
-	int c;
+	int c, help = 0;
 
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((c = getopt_long(argc, argv, optstring, longopts, NULL)) != -1) {
 		switch (c) {
 		case 'h':
-			usage();
-			exit(tool_exit(&t, 0));
+			help = 1;
+			break;
 		case 'p':
 			free(o->pressures);
 			o->pressures = NULL;
@@ -235,12 +235,27 @@ parse(int argc, char **argv, struct opts *o)
 			positive("--p-ref", optarg, &o->p_ref);
 			o->have_p_ref = 1;
 			break;
+		case 'j': {
+			/* checked like every tool's, but one thread runs:
+			 * no note about the cores (it said "using 2") */
+			long n;
+
+			if (tool_long(&t, "-j", optarg, &n) == 0 &&
+			    (n < 1 || n > 4096))
+				tool_bad(&t, "-j %s: threads must be 1 to 4096",
+				    optarg);
+			break;
+		}
 		case '?':
 			tool_bad_option(&t, optstring, longopts, argv);
 			break;
 		default:
 			tool_common_option(&t, c, optarg);
 		}
+	}
+	if (help && tool_help_check(&t)) {
+		usage();
+		exit(tool_exit(&t, 0));
 	}
 
 	/* validated together */

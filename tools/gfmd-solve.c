@@ -79,10 +79,29 @@ arm_timer(double minutes)
 	setitimer(ITIMER_REAL, &it, NULL);
 }
 
+/* 1 if argv element a is the option that took value v (getopt_long's
+ * optarg: inside a, as in --init=F or an abbreviation --ini=F) or the
+ * option word just before v's own element (--ini F).  By pointer, so an
+ * abbreviated option is found and an argument that merely reads
+ * "--init" is not. */
+static int
+takes_value(char *const *argv, int i, int argc, const char *v)
+{
+	const char *a = argv[i];
+
+	if (v == NULL)
+		return 0;
+	if (v > a && v <= a + strlen(a))
+		return 1;
+	return v == a || (i + 1 < argc && v == argv[i + 1]);
+}
+
 /* The command that resumes this run: the same arguments without --init
- * or an earlier --resume, plus --resume PATH. */
+ * or an earlier --resume (skip: their values, as parsed), plus --resume
+ * PATH. */
 static char *
-resume_command(int argc, char **argv, const char *path)
+resume_command(int argc, char **argv, const char *path,
+    const char *const skip[2])
 {
 	size_t len = 4 * strlen(path) + 32;
 	char *cmd, *w;
@@ -98,13 +117,8 @@ resume_command(int argc, char **argv, const char *path)
 
 		if (i == 0)
 			a = "gfmd-solve";
-		if (i > 0 && i < argc && (strcmp(a, "--init") == 0 ||
-		    strcmp(a, "--resume") == 0)) {
-			i++;
-			continue;
-		}
-		if (i > 0 && i < argc && (strncmp(a, "--init=", 7) == 0 ||
-		    strncmp(a, "--resume=", 9) == 0))
+		if (i > 0 && i < argc && (takes_value(argv, i, argc, skip[0]) ||
+		    takes_value(argv, i, argc, skip[1])))
 			continue;
 		for (int twice = 0; twice < (i == argc ? 2 : 1); twice++) {
 			int quote;
@@ -411,7 +425,7 @@ parse_options(struct run *r, int argc, char **argv)
 	};
 	struct gfmd_opts *o = &r->o;
 	rc_err err;
-	int c;
+	int c, help = 0;
 
 	r->argc = argc;
 	r->argv = argv;
@@ -419,11 +433,14 @@ parse_options(struct run *r, int argc, char **argv)
 	gfmd_opts_init(o);
 	opterr = 0;	/* tool_bad reports, so that all problems are counted */
 	while ((c = getopt_long(argc, argv, GFMD_OPTSTRING, longopts, NULL)) != -1) {
-		if (c == 'h') {
-			usage();
-			return 1;
-		}
-		gfmd_option(&r->t, o, c, optarg, argv);
+		if (c == 'h')
+			help = 1;
+		else
+			gfmd_option(&r->t, o, c, optarg, argv);
+	}
+	if (help && tool_help_check(&r->t)) {
+		usage();
+		return 1;
 	}
 	gfmd_opts_check(&r->t, o, argc, argv);
 	tool_usage_check(&r->t);
@@ -893,8 +910,9 @@ stop_inside(struct run *r, size_t k, double p, long iterations)
 		}
 	}
 	if (stop_signal) {
+		const char *skip[2] = { o->init, o->resume_path };
 		char *cmd = o->ck_path ? resume_command(r->argc, r->argv,
-		    o->ck_path) : NULL;
+		    o->ck_path, skip) : NULL;
 
 		keep_finished_rows(r, k, o->ck_path != NULL);
 		if (o->ck_path == NULL)
@@ -1054,7 +1072,8 @@ checkpoint_after(struct run *r, size_t k)
 		tool_warn(&r->t, "checkpoint %s: %s; going on", o->ck_path, err.msg);
 	}
 	if (stop_signal) {
-		char *cmd = resume_command(r->argc, r->argv, o->ck_path);
+		const char *skip[2] = { o->init, o->resume_path };
+		char *cmd = resume_command(r->argc, r->argv, o->ck_path, skip);
 
 		keep_finished_rows(r, k + 1, 1);
 		tool_fail(&r->t, "interrupted by signal %d after pressure %zu "

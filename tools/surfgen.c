@@ -180,15 +180,15 @@ static int
 parse_options(struct run *r, int argc, char **argv)
 {
 	struct tool *t = &r->t;
-	int opt, spectrum_opts = 0;
+	int opt, spectrum_opts = 0, help = 0;
 
 	tool_init(t, "surfgen", argc, argv);
 	surfgen_opts_init(&r->o);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "hn:L:H:o:j:q", longopts, NULL)) != -1) {
 		if (opt == 'h') {
-			usage();
-			return 1;
+			help = 1;
+			continue;
 		}
 		if (opt == OPT_LIKE) {
 			r->like = optarg;
@@ -203,6 +203,10 @@ parse_options(struct run *r, int argc, char **argv)
 		    surfgen_option(t, &r->o, opt, optarg))
 			continue;
 		tool_bad_option(t, "hn:L:H:o:j:q", longopts, argv);
+	}
+	if (help && tool_help_check(t)) {
+		usage();
+		return 1;
 	}
 	if (optind < argc)
 		tool_bad(t, "%s: unexpected argument (surfgen reads no input)", argv[optind]);

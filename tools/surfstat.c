@@ -27,6 +27,7 @@
 #include "stats.h"
 #include "stats_nonuni.h"
 #include "table_write.h"
+#include "units.h"
 
 enum {
 	OPT_MASK = OPT_TOOL_FIRST,
@@ -839,6 +840,20 @@ stat_opts_check(struct tool *t, struct stat_opts *so, int argc, char **argv)
 		tool_bad(t, "--acf-threshold: only with --iso");
 	if ((so->min_wl.value > 0 || so->max_wl.value > 0) && table != T_FIT)
 		tool_bad(t, "--min-wavelength, --max-wavelength: only with --fit");
+	else if (so->min_wl.value > 0 && so->max_wl.value > 0) {
+		/* bounds of one kind compare without the map (a usage error);
+		 * of two kinds (L and a unit, ...) only on it (fit_range) */
+		const rc_fit_length *a = &so->min_wl, *b = &so->max_wl;
+		double bmax = NAN;
+
+		if (a->scan == b->scan && !a->unit[0] == !b->unit[0])
+			bmax = a->unit[0] ? rc_unit_convert(b->value, b->unit,
+			    a->unit) : b->value;
+		if (!(bmax > a->value) && !isnan(bmax))
+			tool_bad(t, "--min-wavelength %g%s%s, --max-wavelength "
+			    "%g%s%s: need min < max", a->value, a->scan ? "L" : "",
+			    a->unit, b->value, b->scan ? "L" : "", b->unit);
+	}
 	if (so->psd2d != NULL)
 		tool_check_grid_path(t, "--psd2d", so->psd2d);
 	tool_output(t, "-o", t->out ? t->out : "-", 0);
@@ -1039,18 +1054,21 @@ main(int argc, char **argv)
 	    .acf_s = 0.2 };
 	rc_grid *g, *mask = NULL;
 	rc_err err;
-	int opt;
+	int opt, help = 0;
 
 	tool_init(&t, "surfstat", argc, argv);
 	opterr = 0;	/* unknown options are reported with the others */
 	while ((opt = getopt_long(argc, argv, "ho:j:qL:", longopts, NULL)) != -1) {
 		if (tool_common_option(&t, opt, optarg))
 			continue;
-		if (opt == 'h') {
-			usage();
-			return tool_exit(&t, 0);
-		}
-		stat_option(&t, &so, opt, optarg, argv);
+		if (opt == 'h')
+			help = 1;
+		else
+			stat_option(&t, &so, opt, optarg, argv);
+	}
+	if (help && tool_help_check(&t)) {
+		usage();
+		return tool_exit(&t, 0);
 	}
 	stat_opts_check(&t, &so, argc, argv);
 	t.nonuniform = 1;	/* x-z profiles not uniformly spaced: as they are */

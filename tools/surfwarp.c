@@ -398,7 +398,7 @@ main(int argc, char **argv)
 	struct warp_opts wo;
 	rc_grid *g;
 	rc_err err;
-	int opt;
+	int opt, help = 0;
 
 	memset(&wo, 0, sizeof(wo));
 	wo.carve_seed = 1;
@@ -407,11 +407,14 @@ main(int argc, char **argv)
 	while ((opt = getopt_long(argc, argv, "hw:o:j:qL:", longopts, NULL)) != -1) {
 		if (tool_common_option(&t, opt, optarg))
 			continue;
-		if (opt == 'h') {
-			usage();
-			return tool_exit(&t, 0);
-		}
-		warp_option(&t, &wo, opt, optarg, argc, argv);
+		if (opt == 'h')
+			help = 1;
+		else
+			warp_option(&t, &wo, opt, optarg, argc, argv);
+	}
+	if (help && tool_help_check(&t)) {
+		usage();
+		return tool_exit(&t, 0);
 	}
 	warp_opts_check(&t, &wo, argc, argv);
 	tool_threads_setup(&t);

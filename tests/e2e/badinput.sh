@@ -459,5 +459,23 @@ expect_fail1 "contact-stats, a directory" "$R" contact-stats -q -o out.tsv "$R"
 expect_fail1 "contact-stats, empty stdin" "standard input" contact-stats -q -o out.tsv
 expect_fail1 "contact-stats, good then bad file" "$R/a_r-word.tsv" contact-stats -q -o out.tsv "$D/rows.tsv" "$R/a_r-word.tsv"
 
+# -h beside a bad option (before or after it): the problem is reported,
+# exit 2, as without -h; -h alone prints the help, exit 0.
+for t in surfgen surfwarp surfstat gfmd-solve contact-stats; do
+	check_status "$t --no-such-option -h: exit 2" 2 $t --no-such-option -h
+	check "  names the option" grep -q 'no-such-option' "$T_TMP/stderr"
+	check_status "$t -h --no-such-option: exit 2" 2 $t -h --no-such-option
+	$t -h > help.txt 2>&1; st=$?
+	check "$t -h alone: exit 0, the help" test "$st" = 0 -a "$(grep -c -- '--help\|-h' help.txt)" -ge 1
+done
+# --min-wavelength >= --max-wavelength of one kind: a usage error (2)
+# before any reading; of two kinds (L and a length) it needs the map.
+surfgen -q -n 16 -o w16.surf
+check_status "--fit, min 0.5L >= max 0.1L: exit 2" 2 surfstat --fit --min-wavelength 0.5L --max-wavelength 0.1L w16.surf
+check "  need min < max" grep -q 'min < max' "$T_TMP/stderr"
+check_status "--fit, min 5um >= max 1000nm: exit 2" 2 surfstat --fit --min-wavelength 5um --max-wavelength 1000nm w16.surf
+surfgen -q -n 16 -L 10 | surfwarp -q --unit um -o w16um.surf
+check_status "--fit, min 2um < max 5000nm on a 10 um map: accepted" 0 surfstat --fit --min-wavelength 2um --max-wavelength 5000nm w16um.surf
+
 echo "bad inputs tried: $n_bad ($nfiles broken grid files)"
 summary

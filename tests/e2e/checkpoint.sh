@@ -366,4 +366,22 @@ if [ -f uc.surf ] && head -c 4000 uc.surf | grep -aq '^meta.checkpoint.next = 1$
 else
 	skip 9 "unconverged resume: the signal did not land in the second pressure"
 fi
+# --- The printed resume command leaves out --init however it was
+# spelled (an abbreviation --ini printed it back, with --resume: refused).
+gfmd-solve -j 1 -q -p 0.05 --displacement u128.surf -o /dev/null s128.surf
+printed=0
+for wait_s in 0.3 1 2 4; do
+	rm -f ab.surf
+	gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 1000000 -p 0.05 \
+	    --ini u128.surf --checkpoint ab.surf -o ab.tsv s128.surf 2>ab.err & pid=$!
+	sleep $wait_s
+	kill -INT $pid 2>/dev/null; wait $pid
+	grep -q 'resume with:' ab.err || continue
+	printed=1
+	cmd=$(sed -n 's/.*resume with: //p' ab.err)
+	check "resume command without the abbreviated --init ($cmd)" \
+	    test "$cmd" = "gfmd-solve -j 1 -q --tol 1e-15 --stall 0 --max-iter 1000000 -p 0.05 --checkpoint ab.surf -o ab.tsv s128.surf --resume ab.surf"
+	break
+done
+[ $printed = 1 ] || skip 1 "resume command with --ini: no signal landed in the solve"
 summary

@@ -250,6 +250,11 @@ check_rel "the exact eps_c of nx = 137 is listed" "$(col many-out.tsv eps_c 1 | 
 check_status "--gnuplot - with the table on stdout" 2 contact-stats --gnuplot - a.tsv
 check_status "--gnuplot - with -o" 0 contact-stats --gnuplot - -o /dev/null a.tsv
 check_status "--png - with the table on stdout" 2 contact-stats --png - a.tsv
+# -j: checked, no effect (one thread): no note about cores (it said
+# "more threads than the 2 cores available; using 2").
+contact-stats -j 4096 --no-extrapolate -o /dev/null a.tsv 2>j.err
+check "-j 4096: no note about cores ($(head -c 120 j.err))" test ! -s j.err
+check_status "-j 0: a usage error" 2 contact-stats -j 0 --no-extrapolate -o /dev/null a.tsv
 # --png: gnuplot run on the script, written atomically.
 mkdir -p png nobin fakebin
 printf '#!/bin/sh\necho "fake gnuplot fails" >&2\nexit 3\n' >fakebin/gnuplot

@@ -76,6 +76,11 @@ if command -v gwyddion >/dev/null 2>&1; then
 	# method, then CG: both converge (exit 0, residual <= tol) ...
 	check_status "top-1: gfmd-solve -p 0.01,0.05 (FIRE, free) converges" 0 gfmd-solve -q -j 1 -p 0.01,0.05 -o fire.tsv lev.surf
 	check_status "top-1: ... with --method cg" 0 gfmd-solve -q -j 1 --method cg -p 0.01,0.05 -o cg.tsv lev.surf
+	# README's "Measured data" prints these rows' a_r (4 digits) and
+	# iterations in its comment (they went stale once: 47, 44 for 65, 53)
+	said=$(sed -n 's/^    gfmd-solve -p 0.01,0.05 lev.surf *# a_r \([0-9.]*\), \([0-9.]*\) (FIRE, free; \([0-9]*\), \([0-9]*\) iterations)$/\1 \2 \3 \4/p' "$RC_TOP/README.md")
+	got=$(printf '%.4g %.4g %d %d' "$(col fire.tsv a_r 1)" "$(col fire.tsv a_r 2)" "$(col fire.tsv iterations 1)" "$(col fire.tsv iterations 2)")
+	check "README's measured-data comment = these rows ($said; rows: $got)" [ "$said" = "$got" ]
 	for k in 1 2; do
 		p=$(col fire.tsv p_star $k)
 		check "p* = $p: FIRE on free boundaries" [ "$(col fire.tsv boundary $k)" = free ]
@@ -95,7 +100,7 @@ if command -v gwyddion >/dev/null 2>&1; then
 		check_range "p* = $p: a_r / p* in [1, 2.5]" "$(awk -v a="$(col fire.tsv a_r $k)" -v p="$p" 'BEGIN { print a / p }')" 1 2.5
 	done
 else
-	skip 19 "gwyddion is not installed (top-1.top needs its reader)"
+	skip 20 "gwyddion is not installed (top-1.top needs its reader)"
 fi
 
 # --- bench/field.sh on a small folder -------------------------------------------
