@@ -9,6 +9,7 @@
 #include "units.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -488,7 +489,11 @@ rc_grid_list_channels(const char *path, const rc_read_opts *o,
 		c->ny = g->ny;
 		c->lx = g->lx;
 		c->ly = g->ly;
+		/* missing points: a mask, or NaN (which a read of the
+		 * channel turns into one: rc_grid_read_finish) */
 		c->has_mask = g->valid != NULL;
+		for (size_t i = 0; !c->has_mask && i < rc_grid_size(g); i++)
+			c->has_mask = isnan(g->z[i]);
 	}
 	if (r == 0)
 		*n = s.n;

@@ -233,6 +233,15 @@ columns(const double *v, size_t ncol, size_t n, const double *ulp,
 	int x_fast = 1;
 	rc_grid *g;
 
+	/* one point has no spacing to give the cell size (a line that
+	 * starts with '#', as Excel's #N/A, is a comment: the rest can be
+	 * a single line) */
+	if (n < 2) {
+		rc_seterr(err, "one point in %s columns: no spacing gives the "
+		    "cell size (the other lines are comments or blank?)",
+		    ncol == 3 ? "x-y-z" : "x-z");
+		return NULL;
+	}
 	if (ncol == 3) {
 		y0 = v[1];
 		/* the length of the first run of equal y (or equal x) */
@@ -325,7 +334,8 @@ decimals(const char *tok)
 
 /* The values of a text file: whitespace, ',' or ';' between them (',' a
  * decimal comma in Gwyddion's export, which never separates with it),
- * '#' to the end of a line a comment, trailing empty fields (Dektak's
+ * '#' to the end of a line a comment (at the start of a token: inside
+ * one it is part of it), trailing empty fields (Dektak's
  * "0.0,-0.00933,,") dropped.  Every row must have as many values as the
  * first.  ulp[k]: 10^-d if every value of column k < TXT_MAXCOL is
  * printed in fixed point with d decimals, else 0.
@@ -354,8 +364,10 @@ read_values(rc_in *in, int decimal_comma, size_t lineno, double **vals,
 			rc_seterr(err, "line %zu: NUL byte: not a text file", lineno);
 			goto fail;
 		}
-		if (c != EOF && c != '\n' && c != '#' && c != ',' && c != ';' &&
-		    !isspace(c)) {
+		/* '#' starts a comment between values; inside one it is
+		 * part of it (1.#QNAN: not a number, not 1 and a comment) */
+		if (c != EOF && c != '\n' && (c != '#' || tlen > 0) && c != ',' &&
+		    c != ';' && !isspace(c)) {
 			if (tlen >= TOKEN_MAX) {
 				tok[TOKEN_MAX] = '\0';
 				rc_seterr(err, "line %zu: '%s' is not a number", lineno,

@@ -435,13 +435,31 @@ matrix_line(struct txt_header *h, const char *t, size_t lno, rc_err *err)
 }
 
 /* The pending text line, which directly precedes the numbers or a line
- * of units, is a line of column names. */
-static void
-set_names(struct txt_header *h, const char *t, size_t lno)
+ * of units, is a line of column names, unless a field of it is a number
+ * the reader does not take: one that strtod reads whole (beyond the
+ * range of a double: 1e400) or up to a '#' (MSVC's 1.#QNAN, -1.#INF),
+ * which as "names" would drop the profile's first point without a word.
+ * A name that starts with digits ("2D height") is still a name. */
+static int
+set_names(struct txt_header *h, const char *t, size_t lno, rc_err *err)
 {
+	char q[64], *end;
+
 	h->ncolname = fields(t, h->colname, TXT_MAXCOL);
+	for (size_t k = 0; k < h->ncolname && k < TXT_MAXCOL; k++) {
+		const char *f = h->colname[k];
+
+		(void)strtod(f, &end);
+		if (end != f && (*end == '\0' || *end == '#'))
+			return rc_seterr(err, "line %zu: '%s' is not a number this "
+			    "reader takes (beyond the range of a double, or a "
+			    "spelling of NaN or infinity other than nan, inf; a "
+			    "missing point is written NaN)", lno,
+			    rc__io_quote(q, sizeof(q), f, strlen(f)));
+	}
 	h->colname_line = lno;
 	rc__io_quote(h->colname_text, sizeof(h->colname_text), t, strlen(t));
+	return 0;
 }
 
 static int
@@ -533,7 +551,8 @@ rc__txt_preamble(rc_in *in, struct txt_header *h, size_t *lineno,
 			continue;
 		if (units_line(h, t)) {
 			if (pending != NULL) {
-				set_names(h, pending, pending_line);
+				if (set_names(h, pending, pending_line, err) != 0)
+					goto out;
 				free(pending);
 				pending = NULL;
 			}
@@ -568,7 +587,8 @@ rc__txt_preamble(rc_in *in, struct txt_header *h, size_t *lineno,
 			    pending, strlen(pending)));
 			goto out;
 		}
-		set_names(h, pending, pending_line);
+		if (set_names(h, pending, pending_line, err) != 0)
+			goto out;
 	}
 	*lineno = lno;
 	r = 0;

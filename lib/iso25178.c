@@ -37,7 +37,7 @@ sorted_heights(const rc_grid *g, double *mean, size_t *n, rc_err *err)
 			m++;
 		}
 	if (m == 0) {
-		rc_seterr(err, "no valid point");
+		rc_seterr(err, "no valid point: every height is missing (NaN)");
 		return NULL;
 	}
 	if ((z = rc_malloc(m * sizeof(double), err)) == NULL)

@@ -508,7 +508,7 @@ psd1d_table(const struct tool *t, const rc_grid *g, enum rc_psd1d_dir dir,
 }
 
 static void
-iso_row(const struct tool *t, const rc_grid *g, double s)
+iso_row(const struct tool *t, const char *in, const rc_grid *g, double s)
 {
 	rc_iso iso;
 	rc_err err;
@@ -516,7 +516,8 @@ iso_row(const struct tool *t, const rc_grid *g, double s)
 	struct out o;
 
 	if (rc_iso25178(g, s, &iso, &err) != 0)
-		tool_fail(t, "%s", err.msg);
+		tool_fail_at(t, in && !rc_is_stdio(in) ? in : "standard input",
+		    err.msg);
 	rc_row_init(&r);
 	if (rc_row_int(&r, "nx", (long long)g->nx) != 0 ||
 	    rc_row_int(&r, "ny", (long long)g->ny) != 0 ||
@@ -1028,7 +1029,7 @@ run_stats(struct tool *t, const struct stat_opts *so, const rc_grid *g,
 		psd1d_table(t, g, so->dir1d, so->window);
 		break;
 	case T_ISO:
-		iso_row(t, g, so->acf_s);
+		iso_row(t, so->in, g, so->acf_s);
 		break;
 	case T_MR:
 		mr_table(t, g, so->nmr);

@@ -75,4 +75,36 @@ if command -v ncgen >/dev/null 2>&1; then
 	refused "HDF5 with no 1-D or 2-D data set: said, with h5ls" \
 		'an HDF5 file .*h5ls' surfstat d.h5
 fi
+# --channels says mask "yes" where points are missing as NaN (a read
+# turns them into a mask; the listing said "no" for text, .surf, .npy).
+printf '1 2\nnan 4\n' >nanpt.txt
+printf '1 2\n3 4\n' >nonan.txt
+check "--channels: NaN in a text grid is a mask" [ "$(surfstat --channels nanpt.txt | awk -F'\t' 'NR == 2 { print $9 }')" = yes ]
+check "--channels: no NaN, no mask" [ "$(surfstat --channels nonan.txt | awk -F'\t' 'NR == 2 { print $9 }')" = no ]
+surfwarp -q -o nanpt.surf nanpt.txt
+check "--channels: .surf with a missing point is a mask" [ "$(surfstat --channels nanpt.surf | awk -F'\t' 'NR == 2 { print $9 }')" = yes ]
+# A value the reader does not take is an error naming it: also on the
+# first line of a profile (it was taken for a column name, the first
+# point dropped without a word), and 1.#QNAN (MSVC's NaN) was read as 1
+# and a comment.
+printf '1e400\n2\n3\n4\n' >big1.txt
+printf '1.#QNAN\n2\n3\n4\n' >qnan1.txt
+printf '1 2\n1.#QNAN 4\n' >qnan2.txt
+printf '1 2\n3 4#c\n' >hash.txt
+for f in big1:1e400 qnan1:1.#QNAN qnan2:1.#QNAN hash:4#c; do
+	check_status "${f%%:*}.txt: refused" 1 surfstat -q "${f%%:*}.txt"
+	check "  names '${f#*:}'" grep -qF "'${f#*:}' is not a number" "$T_TMP/stderr"
+done
+printf '1 2 # a comment\n3 4,# another\n' >cmt.txt
+surfwarp -q -o cmt.out.txt cmt.txt
+check "a '#' after a blank or separator is a comment" [ "$(grep -v '^#' cmt.out.txt | tr '\n' ' ')" = "1 2 3 4 " ]
+# Messages that say what is wrong: one point of x-z columns (the rest
+# comments, as a '#N/A' line) said "cell size 0x0"; an all-NaN map's
+# --iso said "no valid point" without the file.
+printf 'a,b\n1,2\n#N/A,3\n' >na.csv
+check_status "x-z columns of one point: refused" 1 surfstat -q na.csv
+check "  said so" grep -q "na.csv: one point in x-z columns" "$T_TMP/stderr"
+printf 'nan nan\nnan nan\n' >allnan.txt
+check_status "--iso of a map without a valid point: exit 1" 1 surfstat -q --iso allnan.txt
+check "  names the file" grep -q "allnan.txt: no valid point: every height is missing" "$T_TMP/stderr"
 summary
