@@ -257,7 +257,7 @@ FUZZ_CC  ?= clang
 FUZZ_CFLAGS = -g -O1 -fsanitize=fuzzer,address,undefined \
 	-fno-sanitize-recover=undefined $(STD) $(LIB_DIRS:%=-I%) $(PKG_CFLAGS) $(DLOPEN_CFLAGS)
 FUZZ_READ_SRC = lib/io.c lib/io_shared.c lib/io_surf.c lib/io_npy.c lib/io_gsf.c lib/io_txt.c lib/io_txt_head.c \
-	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_sdf.c \
+	lib/io_chan.c lib/io_gwy.c lib/io_x3p.c lib/io_nc.c lib/io_h5check.c lib/io_sdf.c \
 	lib/io_gwyddion.c lib/io_decode.c lib/io_zip.c lib/io_xlsx.c lib/io_ce.c lib/md5.c lib/grid.c lib/rc_err.c lib/atomic.c lib/units.c
 # what those call: libzip/libxml2/libyaml loaded at run time (io_dl.c),
 # grids' values on huge pages (rc_grid_values -> fft.c's rc_fft_huge)
