@@ -417,6 +417,7 @@ rc_fft_free(rc_fft *f)
 		if (f->block_tail[what])
 			fftw_destroy_plan(f->block_tail[what]);
 	}
+	fftw_free(f->column_buf_all);
 	rc_fft_huge_free(f->real, f->real_block);
 	rc_fft_huge_free(f->spec, f->spec_block);
 	memset(f, 0, sizeof(*f));
@@ -449,10 +450,21 @@ rc_fft_backward(rc_fft *f)
 }
 
 /* One-thread plans (the stages run one block per thread): `count` rows
- * of the real buffer to spec or back, or `count` adjacent columns of
- * spec in place; spec's rows nxs apart (fft.h).  Every block starts at a
- * multiple of RC_FFT_BLOCK rows or columns, 8 doubles or complex values,
- * so at FFTW's alignment of the planned base. */
+ * of the real buffer to spec or back (spec's rows nxs apart, fft.h), or
+ * `count` columns in place in a column buffer, each column contiguous.
+ * Every block starts at a multiple of RC_FFT_BLOCK rows, 8 doubles or
+ * complex values, so at FFTW's alignment of the planned base; every
+ * column buffer at fftw_malloc's.
+ *
+ * Why the columns are gathered: FFTW's ESTIMATE plan for 8 columns in
+ * place, nxs apart, is a radix-8 decomposition vectorised across the
+ * columns that took 3.3 ms per direction over the 512 columns of a
+ * 1024^2 grid (one thread, this project's 2-core machine), the whole
+ * column stage (forward, multiplier, backward) 7.7 ms; on the columns
+ * gathered contiguous it takes 1.3 ms per direction and the stage,
+ * gather and scatter included, 5.0 ms (2048^2: 43 -> 29 ms, 4096^2:
+ * 399 -> 184 ms).  A different algorithm, so the values change at the
+ * level of rounding (issue 29's note). */
 static fftw_plan
 plan_block(rc_fft *f, int what, int count, unsigned flags)
 {
@@ -470,9 +482,10 @@ plan_block(rc_fft *f, int what, int count, unsigned flags)
 		p = fftw_plan_many_dft_c2r(1, &nx, count, f->spec, NULL, 1, nxs,
 		    f->real, NULL, 1, nx, flags);
 	else
-		p = fftw_plan_many_dft(1, &ny, count, f->spec, NULL, nxs, 1,
-		    f->spec, NULL, nxs, 1, what == 2 ? FFTW_FORWARD :
-		    FFTW_BACKWARD, flags);
+		p = fftw_plan_many_dft(1, &ny, count, f->column_buf_all, NULL, 1,
+		    (int)f->column_dist, f->column_buf_all, NULL, 1,
+		    (int)f->column_dist, what == 2 ?
+		    FFTW_FORWARD : FFTW_BACKWARD, flags);
 #ifdef _OPENMP
 	fftw_plan_with_nthreads(threads);
 #endif
@@ -491,6 +504,20 @@ rc_fft_conv_init(rc_fft *f, enum rc_fft_effort effort, size_t min_points,
 	if (f->nx * f->ny < min_points || f->nxc < RC_FFT_BLOCK ||
 	    f->ny < RC_FFT_BLOCK)
 		return 0;
+	/* a column buffer per thread that rc_fft_columns may run; its
+	 * columns 8 values more than ny apart: ny apart (a power of two)
+	 * they fell on one L1 set and 4 kB-aliased (the multiplier's
+	 * stores to one column and loads from the next stalled: 27% of the
+	 * stage's own time at 1024^2) */
+	f->column_dist = f->ny + RC_FFT_BLOCK;
+	f->ncolumn_buf = omp_get_max_threads();
+	if (f->ncolumn_buf < 1)
+		f->ncolumn_buf = 1;
+	if ((f->column_buf_all = fftw_alloc_complex((size_t)f->ncolumn_buf *
+	    RC_FFT_BLOCK * f->column_dist)) == NULL)
+		return rc_seterr(err, "out of memory (the column buffers, %zu "
+		    "bytes)", (size_t)f->ncolumn_buf * RC_FFT_BLOCK * f->column_dist *
+		    sizeof(fftw_complex));
 	for (int what = 0; what < 4; what++) {
 		f->block[what] = plan_block(f, what, RC_FFT_BLOCK, flags);
 		if ((what < 2 ? row_rest : col_rest) > 0)
@@ -549,72 +576,111 @@ rc_fft_rows_c2r(rc_fft *f, double *out, size_t b)
 	fftw_execute_dft_c2r(p, f->spec + j0 * f->nxs, out + j0 * f->nx);
 }
 
-/* z[i] *= c_q for `count` complex values z and their k (the products
- * and quotients of rc_fft_multiply); inline, so that a constant count
- * unrolls. */
-static inline void
-multiply_run(double *z, const double *k, size_t count, int inverse,
-    double scale, double at_zero)
+/* How many rows ahead the column stage's strided reads are prefetched. */
+#define PREFETCH_ROWS 16
+
+/* The `count` columns of spec from i0 into buf, column c at buf + c dist
+ * (dist = f->column_dist), or back.  spec's rows are nxs values apart,
+ * past a 4 kB page, where the hardware does not prefetch: software
+ * does, PREFETCH_ROWS ahead. */
+static void
+gather_columns(const rc_fft *f, size_t i0, size_t count, fftw_complex *buf)
 {
-	size_t i;
+	const double *s = (const double *)(f->spec + i0);
+	double *d = (double *)buf;
+	size_t ny = f->ny, nxs = f->nxs, dist = f->column_dist;
 
-	if (!inverse)
-#pragma omp simd
-		for (i = 0; i < count; i++) {
-			double c = k[i] * scale;
-
-			z[2 * i] *= c;
-			z[2 * i + 1] *= c;
+	for (size_t j = 0; j < ny; j++, s += 2 * nxs) {
+		if (j + PREFETCH_ROWS < ny) {
+			__builtin_prefetch(s + 2 * PREFETCH_ROWS * nxs);
+			__builtin_prefetch(s + 2 * PREFETCH_ROWS * nxs + 8);
 		}
-	else
-#pragma omp simd
-		for (i = 0; i < count; i++) {
-			double c = k[i] > 0 ? scale / k[i] : at_zero;
+		for (size_t c = 0; c < count; c++) {
+			d[2 * (c * dist + j)] = s[2 * c];
+			d[2 * (c * dist + j) + 1] = s[2 * c + 1];
+		}
+	}
+}
 
-			z[2 * i] *= c;
-			z[2 * i + 1] *= c;
+static void
+scatter_columns(rc_fft *f, size_t i0, size_t count, const fftw_complex *buf)
+{
+	const double *s = (const double *)buf;
+	double *d = (double *)(f->spec + i0);
+	size_t ny = f->ny, nxs = f->nxs, dist = f->column_dist;
+
+	for (size_t j = 0; j < ny; j++, d += 2 * nxs)
+		for (size_t c = 0; c < count; c++) {
+			d[2 * c] = s[2 * (c * dist + j)];
+			d[2 * c + 1] = s[2 * (c * dist + j) + 1];
 		}
 }
 
-/* spec[m] *= c_q over `count` columns from i0, every row.  The fields of
- * *mu are read once (the stores to spec could alias them), the test of
- * inverse is out of the loop over rows and the rows' loops are SIMD: the
- * columns' stage of a 512^2 FIRE solve took 172 M instructions
- * (callgrind), 98 M so. */
+/* buf's column c *= c_q of column i0 + c, every row: the products and
+ * quotients of rc_fft_multiply, value for value.  Row by row, so that
+ * each row's `count` values of k (one cache line, nxc values after the
+ * last: prefetched) are read once; column by column they cost an L1
+ * miss per value, 47% of the column stage's own time at 1024^2.  The
+ * fields of *mu are read once (the stores could alias them) and the
+ * test of inverse is out of the loops. */
 static void
-multiply_block(rc_fft *f, const rc_fft_multiplier *mu, size_t i0,
-    size_t count)
+multiply_gathered(const rc_fft *f, const rc_fft_multiplier *mu, size_t i0,
+    size_t count, fftw_complex *buf)
 {
-	const double *k = mu->k + i0, scale = mu->scale, at_zero = mu->at_zero;
+	const double scale = mu->scale, at_zero = mu->at_zero;
 	const int inverse = mu->inverse;
-	double *z = (double *)(f->spec + i0);
-	size_t j, ny = f->ny, nxc = f->nxc, nxs = f->nxs;
+	size_t ny = f->ny, nxc = f->nxc, dist = f->column_dist;
+	double *z = (double *)buf;
 
-	if (count == RC_FFT_BLOCK && !inverse)
-		for (j = 0; j < ny; j++)
-			multiply_run(z + 2 * j * nxs, k + j * nxc, RC_FFT_BLOCK,
-			    0, scale, 0);
-	else
-		for (j = 0; j < ny; j++)
-			multiply_run(z + 2 * j * nxs, k + j * nxc, count,
-			    inverse, scale, at_zero);
+	for (size_t j = 0; j < ny; j++) {
+		const double *k = mu->k + j * nxc + i0;
+
+		if (j + PREFETCH_ROWS < ny)
+			__builtin_prefetch(k + PREFETCH_ROWS * nxc);
+		if (!inverse)
+			for (size_t c = 0; c < count; c++) {
+				double q = k[c] * scale;
+
+				z[2 * (c * dist + j)] *= q;
+				z[2 * (c * dist + j) + 1] *= q;
+			}
+		else
+			for (size_t c = 0; c < count; c++) {
+				double q = k[c] > 0 ? scale / k[c] : at_zero;
+
+				z[2 * (c * dist + j)] *= q;
+				z[2 * (c * dist + j) + 1] *= q;
+			}
+	}
 }
 
 void
 rc_fft_columns(rc_fft *f, const rc_fft_multiplier *mu)
 {
-	size_t nblocks = (f->nxc + RC_FFT_BLOCK - 1) / RC_FFT_BLOCK, b;
+	size_t nblocks = (f->nxc + RC_FFT_BLOCK - 1) / RC_FFT_BLOCK;
+	int threads = omp_get_max_threads();
 
-#pragma omp parallel for schedule(static)
-	for (b = 0; b < nblocks; b++) {
-		size_t i0 = b * RC_FFT_BLOCK;
-		int full = i0 + RC_FFT_BLOCK <= f->nxc;
+	if (threads > f->ncolumn_buf)
+		threads = f->ncolumn_buf;
+#pragma omp parallel num_threads(threads)
+	{
+		fftw_complex *buf = f->column_buf_all +
+		    (size_t)omp_get_thread_num() * RC_FFT_BLOCK * f->column_dist;
 
-		fftw_execute_dft(full ? f->block[2] : f->block_tail[2],
-		    f->spec + i0, f->spec + i0);
-		multiply_block(f, mu, i0, full ? RC_FFT_BLOCK : f->nxc - i0);
-		fftw_execute_dft(full ? f->block[3] : f->block_tail[3],
-		    f->spec + i0, f->spec + i0);
+#pragma omp for schedule(static)
+		for (size_t b = 0; b < nblocks; b++) {
+			size_t i0 = b * RC_FFT_BLOCK;
+			int full = i0 + RC_FFT_BLOCK <= f->nxc;
+			size_t count = full ? RC_FFT_BLOCK : f->nxc - i0;
+
+			gather_columns(f, i0, count, buf);
+			fftw_execute_dft(full ? f->block[2] : f->block_tail[2],
+			    buf, buf);
+			multiply_gathered(f, mu, i0, count, buf);
+			fftw_execute_dft(full ? f->block[3] : f->block_tail[3],
+			    buf, buf);
+			scatter_columns(f, i0, count, buf);
+		}
 	}
 }
 
