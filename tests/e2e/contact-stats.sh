@@ -310,11 +310,12 @@ check_rel "  one row per seed and pressure" "$(($(wc -l < seeds.out 2>/dev/null 
 # Issue 27: the gnuplot of a killed contact-stats ran on.  A slow fake
 # gnuplot (its pid in a file, then exec sleep: the same process) is
 # started; contact-stats is killed (SIGKILL: no handler runs); the fake
-# must be gone within a second.
+# must be gone within a second.  TMPDIR is the test's: the killed run's
+# gnuplot script, which no handler can remove, was left in /tmp.
 mkdir -p slowbin
 printf '#!/bin/sh\necho $$ > "%s/slow.pid"\nexec sleep 30\n' "$T_TMP" >slowbin/gnuplot
 chmod +x slowbin/gnuplot
-PATH="$T_TMP/slowbin:$PATH" "$RC_BIN/contact-stats" --png png/slow.png -o /dev/null a.tsv 2>/dev/null &
+TMPDIR="$T_TMP" PATH="$T_TMP/slowbin:$PATH" "$RC_BIN/contact-stats" --png png/slow.png -o /dev/null a.tsv 2>/dev/null &
 cpid=$!
 i=0
 while [ ! -s slow.pid ] && [ $i -lt 200 ]; do sleep 0.05; i=$((i + 1)); done
