@@ -356,21 +356,33 @@ edited(void)
 	    "  naming the row ('%s')", err.msg);
 }
 
+/* The good checkpoint (a.ck) re-read with checkpoint.version set to
+ * version, to be edited into an older one; NULL after a failed check. */
+static rc_grid *
+good_as_version(const char *version)
+{
+	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL);
+	rc_err err;
+
+	if (g == NULL)
+		test_true(0, "re-read a.ck");
+	else
+		rc_grid_meta_set(g, "checkpoint.version", version, &err);
+	return g;
+}
+
 /* A version 5 checkpoint (before --stall and the unconverged rows were
  * recorded): read, the stall unrecorded (-1, any --stall resumes it) and
  * no unconverged row; the keys of version 6 are ignored in it. */
 static void
 version5(void)
 {
-	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_grid *g = good_as_version("5"), *u;
 	rc_checkpoint c;
 	rc_err err;
 
-	if (g == NULL) {
-		test_true(0, "re-read a.ck");
+	if (g == NULL)
 		return;
-	}
-	rc_grid_meta_set(g, "checkpoint.version", "5", &err);
 	rc_grid_meta_unset(g, "checkpoint.stall");
 	rc_grid_meta_unset(g, "checkpoint.unconverged");
 	reseal(g, 1);
@@ -390,15 +402,12 @@ version5(void)
 static void
 version3(void)
 {
-	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_grid *g = good_as_version("3"), *u;
 	rc_checkpoint c;
 	rc_err err;
 
-	if (g == NULL) {
-		test_true(0, "re-read a.ck");
+	if (g == NULL)
 		return;
-	}
-	rc_grid_meta_set(g, "checkpoint.version", "3", &err);
 	rc_grid_meta_set(g, "checkpoint.law", "dugdale", &err);
 	rc_grid_write(g, test_slot_path(1, "v3.ck"), RC_FMT_SURF, &err);
 	rc_grid_meta_unset(g, "checkpoint.law");
@@ -422,16 +431,13 @@ version2(void)
 {
 	static const char *keys[] = { "boundary", "kernel", "hardness",
 	    "thickness", "substrate", "poisson", "adhesion", "range", "law" };
-	rc_grid *g = rc_grid_read(test_slot_path(0, "a.ck"), NULL, NULL), *u;
+	rc_grid *g = good_as_version("2"), *u;
 	rc_checkpoint c;
 	rc_err err;
 	char key[64];
 
-	if (g == NULL) {
-		test_true(0, "re-read a.ck");
+	if (g == NULL)
 		return;
-	}
-	rc_grid_meta_set(g, "checkpoint.version", "2", &err);
 	for (size_t k = 0; k < sizeof(keys) / sizeof(keys[0]); k++) {
 		snprintf(key, sizeof(key), "checkpoint.%s", keys[k]);
 		rc_grid_meta_unset(g, key);
